@@ -1,0 +1,239 @@
+/* bvh.c: binned-SAH bounding volume hierarchy (see bvh.h). */
+#include "accel/bvh.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { BINS = 16, LEAF_MAX = 4, STACK_MAX = 64 };
+
+struct bvh_node {
+	struct aabb box;
+	uint32_t first; /* leaf: first object index; inner: left child (right = left + 1) */
+	uint32_t count; /* objects in a leaf; 0 for an inner node */
+	uint32_t axis;  /* inner: split axis, for front-to-back order */
+};
+
+struct bvh {
+	struct bvh_node *nodes;
+	size_t nnodes, cap;
+	const struct object **objs;
+	size_t nobjs;
+};
+
+static uint32_t new_node(struct bvh *b)
+{
+	if (b->nnodes == b->cap) {
+		b->cap = b->cap ? b->cap * 2 : 64;
+		b->nodes = realloc(b->nodes, b->cap * sizeof *b->nodes);
+		if (!b->nodes) abort();
+	}
+	memset(&b->nodes[b->nnodes], 0, sizeof b->nodes[0]);
+	return (uint32_t)b->nnodes++;
+}
+
+/* Build the subtree over objs[first, first+n) into node `ni`. */
+static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
+{
+	struct aabb box = aabb_empty(), cbox = aabb_empty();
+	for (size_t i = first; i < first + n; i++) {
+		box = aabb_union(box, b->objs[i]->bounds);
+		cbox = aabb_add_point(cbox, aabb_center(b->objs[i]->bounds));
+	}
+	b->nodes[ni].box = box;
+	if (n <= LEAF_MAX || depth >= STACK_MAX - 2) {
+		b->nodes[ni].first = (uint32_t)first;
+		b->nodes[ni].count = (uint32_t)n;
+		return;
+	}
+	/* Pick the axis and bin boundary with the least SAH cost. */
+	double best = INFINITY;
+	int best_axis = -1, best_split = 0;
+	for (int a = 0; a < 3; a++) {
+		double lo = v3_get(cbox.lo, a), ext = v3_get(cbox.hi, a) - lo;
+		if (ext <= 0)
+			continue;
+		struct aabb bb[BINS];
+		size_t cnt[BINS] = {0};
+		for (int k = 0; k < BINS; k++) bb[k] = aabb_empty();
+		for (size_t i = first; i < first + n; i++) {
+			int k = (int)((v3_get(aabb_center(b->objs[i]->bounds), a) - lo) / ext * BINS);
+			if (k >= BINS) k = BINS - 1;
+			if (k < 0) k = 0;
+			cnt[k]++;
+			bb[k] = aabb_union(bb[k], b->objs[i]->bounds);
+		}
+		double rarea[BINS];
+		size_t rcnt[BINS];
+		struct aabb acc = aabb_empty();
+		size_t c = 0;
+		for (int k = BINS - 1; k > 0; k--) {
+			acc = aabb_union(acc, bb[k]);
+			c += cnt[k];
+			rarea[k] = aabb_area(acc);
+			rcnt[k] = c;
+		}
+		acc = aabb_empty();
+		c = 0;
+		for (int k = 0; k < BINS - 1; k++) {
+			acc = aabb_union(acc, bb[k]);
+			c += cnt[k];
+			if (c == 0 || rcnt[k + 1] == 0)
+				continue;
+			double cost = aabb_area(acc) * (double)c + rarea[k + 1] * (double)rcnt[k + 1];
+			if (cost < best) {
+				best = cost;
+				best_axis = a;
+				best_split = k + 1;
+			}
+		}
+	}
+	size_t mid;
+	if (best_axis < 0) {
+		mid = first + n / 2; /* all centroids coincide: split the list */
+	} else {
+		double lo = v3_get(cbox.lo, best_axis), ext = v3_get(cbox.hi, best_axis) - lo;
+		size_t i = first, j = first + n;
+		while (i < j) {
+			int k = (int)((v3_get(aabb_center(b->objs[i]->bounds), best_axis) - lo) / ext * BINS);
+			if (k >= BINS) k = BINS - 1;
+			if (k < best_split) {
+				i++;
+			} else {
+				const struct object *t = b->objs[i];
+				b->objs[i] = b->objs[--j];
+				b->objs[j] = t;
+			}
+		}
+		mid = i;
+		if (mid == first || mid == first + n)
+			mid = first + n / 2;
+	}
+	uint32_t l = new_node(b);
+	uint32_t r = new_node(b); /* children are allocated as a pair: r = l + 1 */
+	b->nodes[ni].first = l;
+	b->nodes[ni].count = 0;
+	b->nodes[ni].axis = (uint32_t)(best_axis < 0 ? 0 : best_axis);
+	build(b, l, first, mid - first, depth + 1);
+	build(b, r, mid, first + n - mid, depth + 1);
+}
+
+struct bvh *bvh_build(struct object *const *objs, size_t n)
+{
+	struct bvh *b = calloc(1, sizeof *b);
+	if (!b) abort();
+	b->nobjs = n;
+	b->objs = malloc((n ? n : 1) * sizeof *b->objs);
+	if (!b->objs) abort();
+	for (size_t i = 0; i < n; i++)
+		b->objs[i] = objs[i];
+	uint32_t root = new_node(b);
+	if (n > 0)
+		build(b, root, 0, n, 0);
+	else
+		b->nodes[root].box = aabb_empty();
+	return b;
+}
+
+void bvh_free(struct bvh *b)
+{
+	if (!b) return;
+	free(b->nodes);
+	free(b->objs);
+	free(b);
+}
+
+size_t bvh_node_count(const struct bvh *b) { return b->nnodes; }
+
+/* Slab test against a node box, with the ray's reciprocal direction. */
+static inline bool box_hit(const struct aabb *bx, vec3 org, vec3 inv, double tmin, double tmax)
+{
+	double t0 = (bx->lo.x - org.x) * inv.x, t1 = (bx->hi.x - org.x) * inv.x;
+	if (t0 > t1) { double t = t0; t0 = t1; t1 = t; }
+	tmin = t0 > tmin ? t0 : tmin;
+	tmax = t1 < tmax ? t1 : tmax;
+	t0 = (bx->lo.y - org.y) * inv.y; t1 = (bx->hi.y - org.y) * inv.y;
+	if (t0 > t1) { double t = t0; t0 = t1; t1 = t; }
+	tmin = t0 > tmin ? t0 : tmin;
+	tmax = t1 < tmax ? t1 : tmax;
+	t0 = (bx->lo.z - org.z) * inv.z; t1 = (bx->hi.z - org.z) * inv.z;
+	if (t0 > t1) { double t = t0; t0 = t1; t1 = t; }
+	tmin = t0 > tmin ? t0 : tmin;
+	tmax = t1 < tmax ? t1 : tmax;
+	/* NaN (0 * inf on a face plane) compares false and keeps the box. */
+	return tmin <= tmax;
+}
+
+static vec3 reciprocal(vec3 d)
+{
+	return v3(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
+}
+
+bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h)
+{
+	if (b->nobjs == 0)
+		return false;
+	vec3 inv = reciprocal(r->dir);
+	uint32_t stack[STACK_MAX];
+	int sp = 0;
+	stack[sp++] = 0;
+	bool found = false;
+	while (sp > 0) {
+		const struct bvh_node *nd = &b->nodes[stack[--sp]];
+		if (!box_hit(&nd->box, r->org, inv, tmin, tmax))
+			continue;
+		if (nd->count) {
+			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+				const struct object *o = b->objs[i];
+				if (o->flags & skip)
+					continue;
+				if (object_intersect(o, r, tmin, tmax, h)) {
+					tmax = h->t;
+					found = true;
+				}
+			}
+		} else {
+			uint32_t left = nd->first, right = nd->first + 1;
+			/* Visit the near child first: push it last. */
+			if (v3_get(r->dir, nd->axis) < 0) {
+				stack[sp++] = left;
+				stack[sp++] = right;
+			} else {
+				stack[sp++] = right;
+				stack[sp++] = left;
+			}
+		}
+	}
+	return found;
+}
+
+bool bvh_occluded(const struct bvh *b, const struct ray *r, double tmin, double tmax, unsigned skip, const struct object **blocker)
+{
+	if (b->nobjs == 0)
+		return false;
+	vec3 inv = reciprocal(r->dir);
+	uint32_t stack[STACK_MAX];
+	int sp = 0;
+	stack[sp++] = 0;
+	struct hit h;
+	while (sp > 0) {
+		const struct bvh_node *nd = &b->nodes[stack[--sp]];
+		if (!box_hit(&nd->box, r->org, inv, tmin, tmax))
+			continue;
+		if (nd->count) {
+			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+				const struct object *o = b->objs[i];
+				if (o->flags & skip)
+					continue;
+				if (object_intersect(o, r, tmin, tmax, &h)) {
+					*blocker = o;
+					return true;
+				}
+			}
+		} else {
+			stack[sp++] = nd->first + 1;
+			stack[sp++] = nd->first;
+		}
+	}
+	return false;
+}

@@ -1,0 +1,79 @@
+/* plane.c: plane { normal, distance }, an infinite half-space whose inside
+ * is the side the normal points away from. */
+#include "geom/shapes.h"
+
+#include <stdlib.h>
+
+struct plane {
+	struct object base;
+	vec3 n;      /* unit normal */
+	double d;    /* dot(p, n) = d on the surface */
+};
+
+static bool plane_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
+{
+	const struct plane *p = (const struct plane *)o;
+	double dn = v3_dot(r->dir, p->n);
+	if (dn == 0)
+		return false; /* parallel: never crosses (lying in it counts as no hit) */
+	double t = (p->d - v3_dot(r->org, p->n)) / dn;
+	if (!(t > tmin && t < tmax))
+		return false;
+	h->t = t;
+	h->part = 0;
+	return true;
+}
+
+static int plane_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out, int max)
+{
+	if (max < 1 || !plane_intersect(o, r, tmin, tmax, out))
+		return 0;
+	out->obj = o;
+	return 1;
+}
+
+static bool plane_inside(const struct object *o, vec3 q)
+{
+	const struct plane *p = (const struct plane *)o;
+	return v3_dot(q, p->n) < p->d;
+}
+
+static vec3 plane_normal(const struct object *o, vec3 q, const struct hit *h)
+{
+	return ((const struct plane *)o)->n;
+}
+
+static struct aabb plane_bounds(const struct object *o)
+{
+	return (struct aabb){{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+}
+
+static struct object *plane_copy(const struct object *o)
+{
+	struct plane *c = malloc(sizeof *c);
+	if (!c) abort();
+	*c = *(const struct plane *)o;
+	return &c->base;
+}
+
+static const struct object_ops plane_ops = {
+	.name = "plane",
+	.intersect = plane_intersect,
+	.all_hits = plane_all_hits,
+	.inside = plane_inside,
+	.normal = plane_normal,
+	.bounds = plane_bounds,
+	.copy = plane_copy,
+};
+
+struct object *plane_new(vec3 normal, double distance, struct srcpos pos)
+{
+	struct plane *p = calloc(1, sizeof *p);
+	if (!p) abort();
+	object_init(&p->base, &plane_ops, pos);
+	p->base.flags |= OBJ_INFINITE;
+	double len = v3_len(normal);
+	p->n = len > 0 ? v3_scale(normal, 1.0 / len) : v3(0, 1, 0);
+	p->d = distance;
+	return &p->base;
+}

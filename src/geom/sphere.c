@@ -1,0 +1,119 @@
+/* sphere.c: sphere { center, radius }. */
+#include "geom/shapes.h"
+
+#include <stdlib.h>
+
+struct sphere {
+	struct object base;
+	vec3 center;
+	double radius, r2;
+};
+
+/* Both crossings of the ray with the sphere, or 0. The discriminant is
+ * formed from the ray's closest approach to the centre (r^2 - d^2), which
+ * keeps its precision for distant spheres and grazing rays alike, and the
+ * near root comes from q so that nothing cancels. */
+static int roots(const struct sphere *s, const struct ray *r, double t[2])
+{
+	vec3 oc = v3_sub(r->org, s->center);
+	double a = v3_dot(r->dir, r->dir);
+	if (a == 0)
+		return 0;
+	double b = v3_dot(oc, r->dir);                  /* half the usual b */
+	vec3 perp = v3_madd(oc, r->dir, -b / a);         /* oc minus its along-ray part */
+	double disc = a * (s->r2 - v3_dot(perp, perp));  /* (b^2 - a c) computed stably */
+	if (disc < 0)
+		return 0;
+	double c = v3_dot(oc, oc) - s->r2;
+	double q = -(b + copysign(sqrt(disc), b));
+	if (q == 0) {
+		t[0] = t[1] = 0;
+		return 2;
+	}
+	double t0 = q / a, t1 = c / q;
+	t[0] = fmin(t0, t1);
+	t[1] = fmax(t0, t1);
+	return 2;
+}
+
+static bool sphere_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	double t[2];
+	if (!roots(s, r, t))
+		return false;
+	for (int i = 0; i < 2; i++)
+		if (t[i] > tmin && t[i] < tmax) {
+			h->t = t[i];
+			h->part = i;
+			return true;
+		}
+	return false;
+}
+
+static int sphere_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out, int max)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	double t[2];
+	int n = 0;
+	if (!roots(s, r, t))
+		return 0;
+	for (int i = 0; i < 2 && n < max; i++)
+		if (t[i] > tmin && t[i] < tmax) {
+			out[n].t = t[i];
+			out[n].part = i;
+			out[n].obj = o;
+			n++;
+		}
+	return n;
+}
+
+static bool sphere_inside(const struct object *o, vec3 p)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	vec3 d = v3_sub(p, s->center);
+	return v3_dot(d, d) < s->r2;
+}
+
+static vec3 sphere_normal(const struct object *o, vec3 p, const struct hit *h)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	return v3_sub(p, s->center);
+}
+
+static struct aabb sphere_bounds(const struct object *o)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	vec3 r = v3(s->radius, s->radius, s->radius);
+	struct aabb b = {v3_sub(s->center, r), v3_add(s->center, r)};
+	return b;
+}
+
+static struct object *sphere_copy(const struct object *o)
+{
+	struct sphere *c = malloc(sizeof *c);
+	if (!c) abort();
+	*c = *(const struct sphere *)o;
+	return &c->base;
+}
+
+static const struct object_ops sphere_ops = {
+	.name = "sphere",
+	.intersect = sphere_intersect,
+	.all_hits = sphere_all_hits,
+	.inside = sphere_inside,
+	.normal = sphere_normal,
+	.bounds = sphere_bounds,
+	.copy = sphere_copy,
+};
+
+struct object *sphere_new(vec3 center, double radius, struct srcpos pos)
+{
+	struct sphere *s = calloc(1, sizeof *s);
+	if (!s) abort();
+	object_init(&s->base, &sphere_ops, pos);
+	s->center = center;
+	s->radius = fabs(radius);
+	s->r2 = radius * radius;
+	return &s->base;
+}

@@ -1,0 +1,614 @@
+/* expr.c: expressions. Numbers, vectors and colours are one family of
+ * values with 1 to 5 components; operators promote a float to every
+ * component and a shorter vector by padding with zeros, as POV-Ray does.
+ * Binary operators are parsed by one precedence-climbing function driven
+ * by a table of binding strengths. */
+#include "lang/parser.h"
+
+#include <math.h>
+#include <string.h>
+
+/* ---- helpers ---- */
+
+static struct value num(double x, struct srcpos pos)
+{
+	struct value v = {.kind = VAL_FLOAT, .n = 1, .pos = pos};
+	v.v[0] = x;
+	return v;
+}
+
+static struct value vec(int n, const double *c, enum val_kind kind, struct srcpos pos)
+{
+	struct value v = {.kind = kind, .n = n, .pos = pos};
+	for (int i = 0; i < 5; i++)
+		v.v[i] = i < n ? c[i] : 0;
+	return v;
+}
+
+static void need_numeric(struct parser *p, const struct value *v, const char *what)
+{
+	if (!val_is_numeric(v))
+		parse_error_at(p, v->pos, "%s needs a number, vector or color, not a %s", what, val_kind_name(v->kind));
+}
+
+static void need_float(struct parser *p, const struct value *v, const char *what)
+{
+	if (v->kind != VAL_FLOAT)
+		parse_error_at(p, v->pos, "%s needs a float, not a %s", what, val_kind_name(v->kind));
+}
+
+/* Promote a to n components (float: every component; vector: zeros). */
+static void widen(struct value *a, int n)
+{
+	if (a->n >= n)
+		return;
+	if (a->kind == VAL_FLOAT)
+		for (int i = 1; i < n; i++)
+			a->v[i] = a->v[0];
+	else
+		for (int i = a->n; i < n; i++)
+			a->v[i] = 0;
+	a->n = n;
+}
+
+static struct value parse_unary(struct parser *p);
+static struct value parse_binary(struct parser *p, int min_prec, bool in_vector);
+static struct value parse_cond(struct parser *p, bool in_vector);
+
+/* ---- binary operators ---- */
+
+enum op { OP_NONE, OP_OR, OP_AND, OP_LT, OP_LE, OP_EQ, OP_GE, OP_GT, OP_NE, OP_ADD, OP_SUB, OP_MUL, OP_DIV };
+
+static const struct {
+	int prec;       /* binding strength: higher binds tighter */
+} ops[] = {
+	[OP_NONE] = {0}, [OP_OR] = {1}, [OP_AND] = {2},
+	[OP_LT] = {3}, [OP_LE] = {3}, [OP_EQ] = {3}, [OP_GE] = {3}, [OP_GT] = {3}, [OP_NE] = {3},
+	[OP_ADD] = {4}, [OP_SUB] = {4}, [OP_MUL] = {5}, [OP_DIV] = {5},
+};
+
+static enum op binop(enum tok_kind k, bool in_vector)
+{
+	switch (k) {
+	case TOK_BAR: return OP_OR;
+	case TOK_AMP: return OP_AND;
+	case TOK_LT: return OP_LT;
+	case TOK_LE: return OP_LE;
+	case TOK_EQ: return OP_EQ;
+	case TOK_GE: return OP_GE;
+	/* Inside < >, a bare '>' closes the vector; compare in parentheses. */
+	case TOK_GT: return in_vector ? OP_NONE : OP_GT;
+	case TOK_NE: return OP_NE;
+	case TOK_PLUS: return OP_ADD;
+	case TOK_MINUS: return OP_SUB;
+	case TOK_STAR: return OP_MUL;
+	case TOK_SLASH: return OP_DIV;
+	default: return OP_NONE;
+	}
+}
+
+static struct value apply(struct parser *p, enum op op, struct value a, struct value b, struct srcpos at)
+{
+	const char *name = op == OP_ADD ? "'+'" : op == OP_SUB ? "'-'" : op == OP_MUL ? "'*'" : op == OP_DIV ? "'/'" : "a comparison";
+	need_numeric(p, &a, name);
+	need_numeric(p, &b, name);
+	if (op <= OP_NE) {
+		if (a.kind != VAL_FLOAT || b.kind != VAL_FLOAT)
+			parse_error_at(p, at, "%s compares floats, not a %s with a %s", op == OP_AND ? "'&'" : op == OP_OR ? "'|'" : "a comparison",
+			               val_kind_name(a.kind), val_kind_name(b.kind));
+		double x = a.v[0], y = b.v[0], r = 0;
+		switch (op) {
+		case OP_OR: r = (x != 0) || (y != 0); break;
+		case OP_AND: r = (x != 0) && (y != 0); break;
+		case OP_LT: r = x < y; break;
+		case OP_LE: r = x <= y; break;
+		case OP_EQ: r = x == y; break;
+		case OP_GE: r = x >= y; break;
+		case OP_GT: r = x > y; break;
+		case OP_NE: r = x != y; break;
+		default: break;
+		}
+		return num(r, a.pos);
+	}
+	int n = a.n > b.n ? a.n : b.n;
+	widen(&a, n);
+	widen(&b, n);
+	struct value r = a;
+	r.kind = (a.kind == VAL_COLOR || b.kind == VAL_COLOR) ? VAL_COLOR : n > 1 ? VAL_VECTOR : VAL_FLOAT;
+	for (int i = 0; i < n; i++) {
+		switch (op) {
+		case OP_ADD: r.v[i] = a.v[i] + b.v[i]; break;
+		case OP_SUB: r.v[i] = a.v[i] - b.v[i]; break;
+		case OP_MUL: r.v[i] = a.v[i] * b.v[i]; break;
+		case OP_DIV:
+			if (b.v[i] == 0)
+				parse_error_at(p, at, "division by zero");
+			r.v[i] = a.v[i] / b.v[i];
+			break;
+		default: break;
+		}
+	}
+	if (r.kind == VAL_COLOR)
+		r.n = 5;
+	return r;
+}
+
+/* binary := unary { op binary-of-higher-strength } */
+static struct value parse_binary(struct parser *p, int min_prec, bool in_vector)
+{
+	struct value a = parse_unary(p);
+	for (;;) {
+		const struct token *t = parse_peek(p);
+		enum op op = binop((enum tok_kind)t->kind, in_vector);
+		if (op == OP_NONE || ops[op].prec < min_prec)
+			return a;
+		struct srcpos at = t->pos;
+		parse_advance(p);
+		struct value b = parse_binary(p, ops[op].prec + 1, in_vector);
+		a = apply(p, op, a, b, at);
+	}
+}
+
+/* cond := binary [ '?' cond ':' cond ] */
+static struct value parse_cond(struct parser *p, bool in_vector)
+{
+	if (++p->expr_depth > MAX_EXPR_DEPTH)
+		parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+	struct value c = parse_binary(p, 1, in_vector);
+	if (parse_is(p, TOK_QUESTION)) {
+		need_float(p, &c, "the condition of '?:'");
+		parse_advance(p);
+		struct value a = parse_cond(p, in_vector);
+		parse_expect(p, TOK_COLON);
+		struct value b = parse_cond(p, in_vector);
+		if (c.v[0] != 0) {
+			val_clear(&b);
+			c = a;
+		} else {
+			val_clear(&a);
+			c = b;
+		}
+	}
+	p->expr_depth--;
+	return c;
+}
+
+/* ---- primaries ---- */
+
+/* '<' expr { ',' expr } '>'  (2 to 5 components) */
+static struct value parse_vector_literal(struct parser *p)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	parse_advance(p);
+	double c[5];
+	int n = 0;
+	for (;;) {
+		struct value e = parse_cond(p, true);
+		need_float(p, &e, "a vector component");
+		if (n == 5)
+			parse_error_at(p, e.pos, "a vector has at most 5 components");
+		c[n++] = e.v[0];
+		if (parse_accept(p, TOK_COMMA))
+			continue;
+		if (parse_is(p, TOK_GT))
+			break;
+		parse_expected(p, "',' or '>' in vector");
+	}
+	parse_advance(p);
+	if (n < 2)
+		parse_error_at(p, at, "a vector needs at least 2 components");
+	return vec(n, c, VAL_VECTOR, at);
+}
+
+static double srgb_decode(double v)
+{
+	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+/* rgb/rgbf/rgbt/rgbft/srgb... VECTOR: a colour from a vector expression. */
+static struct value parse_color_keyword(struct parser *p, enum kw k)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	parse_advance(p);
+	struct value e = parse_binary(p, 4, false);
+	need_numeric(p, &e, kw_names[k]);
+	int want = (k == KW_RGB || k == KW_SRGB) ? 3 : (k == KW_RGBFT || k == KW_SRGBFT) ? 5 : 4;
+	widen(&e, want);
+	double c[5] = {e.v[0], e.v[1], e.v[2], 0, 0};
+	if (k == KW_RGBF || k == KW_SRGBF)
+		c[3] = e.v[3];
+	else if (k == KW_RGBT || k == KW_SRGBT)
+		c[4] = e.v[3];
+	else if (k == KW_RGBFT || k == KW_SRGBFT) {
+		c[3] = e.v[3];
+		c[4] = e.v[4];
+	}
+	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
+		for (int i = 0; i < 3; i++)
+			c[i] = srgb_decode(c[i]);
+	return vec(5, c, VAL_COLOR, at);
+}
+
+static int color_component(enum kw k)
+{
+	switch (k) {
+	case KW_RED: return 0;
+	case KW_GREEN: return 1;
+	case KW_BLUE: return 2;
+	case KW_FILTER: return 3;
+	case KW_TRANSMIT: return 4;
+	default: return -1;
+	}
+}
+
+/* color [colour_body]: 'color' then a colour expression, or the component
+ * form 'color red 1 green 0.5 ...' (missing components are 0). */
+static struct value parse_color_body(struct parser *p, struct srcpos at)
+{
+	struct value c;
+	const struct token *t = parse_peek(p);
+	if (t->kind == TOK_KEYWORD && (color_component((enum kw)t->kw) >= 0 || t->kw == KW_GRAY)) {
+		double z[5] = {0};
+		c = vec(5, z, VAL_COLOR, at);
+	} else {
+		c = parse_binary(p, 1, false);
+		need_numeric(p, &c, "a color");
+		if (c.kind != VAL_COLOR) {
+			widen(&c, 3);
+			double z[5] = {c.v[0], c.v[1], c.v[2], c.n > 3 ? c.v[3] : 0, c.n > 4 ? c.v[4] : 0};
+			c = vec(5, z, VAL_COLOR, at);
+		}
+	}
+	for (;;) {
+		t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD)
+			break;
+		int i = color_component((enum kw)t->kw);
+		if (i < 0)
+			break;
+		parse_advance(p);
+		struct value e = parse_binary(p, 4, false);
+		need_float(p, &e, "a color component");
+		c.v[i] = e.v[0];
+	}
+	return c;
+}
+
+/* The components of a named vector constant. */
+static bool builtin_vector(enum kw k, struct value *out, struct srcpos pos)
+{
+	static const double X[3] = {1, 0, 0}, Y[3] = {0, 1, 0}, Z[3] = {0, 0, 1};
+	static const double T[4] = {0, 0, 0, 1}, U[2] = {1, 0}, V[2] = {0, 1};
+	switch (k) {
+	case KW_X: *out = vec(3, X, VAL_VECTOR, pos); return true;
+	case KW_Y: *out = vec(3, Y, VAL_VECTOR, pos); return true;
+	case KW_Z: *out = vec(3, Z, VAL_VECTOR, pos); return true;
+	case KW_T: *out = vec(4, T, VAL_VECTOR, pos); return true;
+	case KW_U: *out = vec(2, U, VAL_VECTOR, pos); return true;
+	case KW_V: *out = vec(2, V, VAL_VECTOR, pos); return true;
+	default: return false;
+	}
+}
+
+/* Built-in float functions of one or two float arguments. */
+struct fn1 {
+	enum kw kw;
+	int nargs;
+	double (*f1)(double);
+	double (*f2)(double, double);
+};
+
+static double f_degrees(double a) { return a * 180.0 / M_PI; }
+static double f_radians(double a) { return a * M_PI / 180.0; }
+static double f_int(double a) { return trunc(a); }
+static double f_mod(double a, double b) { return fmod(a, b); }
+static double f_div(double a, double b) { return trunc(a / b); }
+static double f_sqr(double a) { return a * a; }
+
+static const struct fn1 float_fns[] = {
+	{KW_ABS, 1, fabs, NULL}, {KW_ACOS, 1, acos, NULL}, {KW_ACOSH, 1, acosh, NULL},
+	{KW_ASIN, 1, asin, NULL}, {KW_ASINH, 1, asinh, NULL}, {KW_ATAN, 1, atan, NULL},
+	{KW_ATANH, 1, atanh, NULL}, {KW_CEIL, 1, ceil, NULL}, {KW_COS, 1, cos, NULL},
+	{KW_COSH, 1, cosh, NULL}, {KW_DEGREES, 1, f_degrees, NULL}, {KW_EXP, 1, exp, NULL},
+	{KW_FLOOR, 1, floor, NULL}, {KW_INT, 1, f_int, NULL}, {KW_LN, 1, log, NULL},
+	{KW_LOG, 1, log10, NULL}, {KW_RADIANS, 1, f_radians, NULL}, {KW_SIN, 1, sin, NULL},
+	{KW_SINH, 1, sinh, NULL}, {KW_SQRT, 1, sqrt, NULL}, {KW_SQR, 1, f_sqr, NULL},
+	{KW_TAN, 1, tan, NULL}, {KW_TANH, 1, tanh, NULL},
+	{KW_ATAN2, 2, NULL, atan2}, {KW_MOD, 2, NULL, f_mod}, {KW_POW, 2, NULL, pow},
+	{KW_DIV, 2, NULL, f_div},
+};
+
+static struct value parse_float_call(struct parser *p, const struct fn1 *fn, struct srcpos at)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LPAREN);
+	double a[2];
+	for (int i = 0; i < fn->nargs; i++) {
+		if (i > 0)
+			parse_expect(p, TOK_COMMA);
+		struct value e = parse_cond(p, false);
+		need_float(p, &e, kw_names[fn->kw]);
+		a[i] = e.v[0];
+	}
+	parse_expect(p, TOK_RPAREN);
+	double r = fn->nargs == 1 ? fn->f1(a[0]) : fn->f2(a[0], a[1]);
+	if (!isfinite(r))
+		parse_error_at(p, at, "%s(): result is not a finite number (argument out of range?)", kw_names[fn->kw]);
+	return num(r, at);
+}
+
+/* min/max(a, b, ...) */
+static struct value parse_minmax(struct parser *p, bool is_max, struct srcpos at)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LPAREN);
+	double r = 0;
+	int n = 0;
+	do {
+		struct value e = parse_cond(p, false);
+		need_float(p, &e, is_max ? "max" : "min");
+		if (n++ == 0 || (is_max ? e.v[0] > r : e.v[0] < r))
+			r = e.v[0];
+	} while (parse_accept(p, TOK_COMMA));
+	parse_expect(p, TOK_RPAREN);
+	if (n < 2)
+		parse_error_at(p, at, "%s() needs at least two arguments", is_max ? "max" : "min");
+	return num(r, at);
+}
+
+static vec3 as_vec3(struct parser *p, struct value e, const char *what)
+{
+	need_numeric(p, &e, what);
+	widen(&e, 3);
+	return v3(e.v[0], e.v[1], e.v[2]);
+}
+
+/* vlength/vnormalize/vdot/vcross(...) */
+static struct value parse_vector_call(struct parser *p, enum kw k, struct srcpos at)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LPAREN);
+	vec3 a = as_vec3(p, parse_cond(p, false), kw_names[k]);
+	vec3 b = v3(0, 0, 0);
+	if (k == KW_VDOT || k == KW_VCROSS) {
+		parse_expect(p, TOK_COMMA);
+		b = as_vec3(p, parse_cond(p, false), kw_names[k]);
+	}
+	parse_expect(p, TOK_RPAREN);
+	switch (k) {
+	case KW_VLENGTH: return num(v3_len(a), at);
+	case KW_VDOT: return num(v3_dot(a, b), at);
+	default: {
+		vec3 r = k == KW_VCROSS ? v3_cross(a, b) : v3_norm(a);
+		double c[3] = {r.x, r.y, r.z};
+		return vec(3, c, VAL_VECTOR, at);
+	}
+	}
+}
+
+static struct value parse_keyword_primary(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	enum kw k = (enum kw)t->kw;
+	struct srcpos at = t->pos;
+	struct value v;
+	if (builtin_vector(k, &v, at)) {
+		parse_advance(p);
+		return v;
+	}
+	switch (k) {
+	case KW_PI: parse_advance(p); return num(M_PI, at);
+	case KW_TRUE: case KW_YES: case KW_ON: parse_advance(p); return num(1, at);
+	case KW_FALSE: case KW_NO: case KW_OFF: parse_advance(p); return num(0, at);
+	case KW_CLOCK: parse_advance(p); return num(p->o->clock, at);
+	case KW_CLOCK_DELTA: parse_advance(p); return num(0, at);
+	case KW_CLOCK_ON: parse_advance(p); return num(0, at);
+	case KW_IMAGE_WIDTH: parse_advance(p); return num(p->o->image_width, at);
+	case KW_IMAGE_HEIGHT: parse_advance(p); return num(p->o->image_height, at);
+	case KW_VERSION: parse_advance(p); return num(p->version, at);
+	case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT:
+	case KW_SRGB: case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT:
+		return parse_color_keyword(p, k);
+	case KW_COLOR: case KW_COLOUR:
+		parse_advance(p);
+		return parse_color_body(p, at);
+	case KW_MIN: return parse_minmax(p, false, at);
+	case KW_MAX: return parse_minmax(p, true, at);
+	case KW_VLENGTH: case KW_VNORMALIZE: case KW_VDOT: case KW_VCROSS:
+		return parse_vector_call(p, k, at);
+	default:
+		for (size_t i = 0; i < sizeof float_fns / sizeof float_fns[0]; i++)
+			if (float_fns[i].kw == k)
+				return parse_float_call(p, &float_fns[i], at);
+	}
+	parse_expected(p, "an expression");
+}
+
+static struct value parse_primary(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	struct srcpos at = t->pos;
+	switch (t->kind) {
+	case TOK_NUMBER: {
+		double x = t->num;
+		parse_advance(p);
+		return num(x, at);
+	}
+	case TOK_LPAREN: {
+		parse_advance(p);
+		struct value v = parse_cond(p, false);
+		parse_expect(p, TOK_RPAREN);
+		v.pos = at;
+		return v;
+	}
+	case TOK_LT:
+		return parse_vector_literal(p);
+	case TOK_STRING: {
+		struct value v = {.kind = VAL_STRING, .pos = at, .str = t->str};
+		parse_advance(p);
+		return v;
+	}
+	case TOK_IDENT: {
+		struct value *v = parse_lookup(p, t->str);
+		if (!v)
+			parse_error(p, "undefined identifier '%s'", t->str);
+		struct value c = val_copy(v);
+		c.pos = at;
+		parse_advance(p);
+		return c;
+	}
+	case TOK_KEYWORD:
+		return parse_keyword_primary(p);
+	default:
+		parse_expected(p, "an expression");
+	}
+}
+
+/* postfix := primary { '.' item } */
+static struct value parse_postfix(struct parser *p)
+{
+	struct value v = parse_primary(p);
+	while (parse_is(p, TOK_DOT)) {
+		parse_advance(p);
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a component name after '.'");
+		need_numeric(p, &v, "'.'");
+		int i;
+		switch (t->kw) {
+		case KW_X: case KW_U: case KW_RED: i = 0; break;
+		case KW_Y: case KW_V: case KW_GREEN: i = 1; break;
+		case KW_Z: case KW_BLUE: i = 2; break;
+		case KW_T: case KW_FILTER: i = 3; break;
+		case KW_TRANSMIT: i = 4; break;
+		case KW_GRAY: i = -1; break;
+		default: parse_expected(p, "a component name after '.'");
+		}
+		if (i < 0) {
+			widen(&v, 3);
+			v = num(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2], v.pos);
+		} else {
+			if (v.kind == VAL_FLOAT)
+				widen(&v, 5);
+			if (i >= v.n)
+				parse_error(p, "this %d-component value has no '.%s'", v.n, kw_names[t->kw]);
+			v = num(v.v[i], v.pos);
+		}
+		parse_advance(p);
+	}
+	return v;
+}
+
+/* unary := ('-' | '+' | '!') unary | postfix */
+static struct value parse_unary(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	struct srcpos at = t->pos;
+	if (t->kind == TOK_MINUS || t->kind == TOK_PLUS || t->kind == TOK_BANG) {
+		enum tok_kind k = (enum tok_kind)t->kind;
+		parse_advance(p);
+		if (++p->expr_depth > MAX_EXPR_DEPTH)
+			parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+		struct value v = parse_unary(p);
+		p->expr_depth--;
+		need_numeric(p, &v, k == TOK_BANG ? "'!'" : "a sign");
+		if (k == TOK_MINUS)
+			for (int i = 0; i < v.n; i++)
+				v.v[i] = -v.v[i];
+		if (k == TOK_BANG) {
+			need_float(p, &v, "'!'");
+			v.v[0] = v.v[0] == 0;
+		}
+		v.pos = at;
+		return v;
+	}
+	return parse_postfix(p);
+}
+
+/* ---- entry points ---- */
+
+struct value parse_expression(struct parser *p)
+{
+	return parse_cond(p, false);
+}
+
+bool parse_starts_expression(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	switch (t->kind) {
+	case TOK_NUMBER: case TOK_LPAREN: case TOK_LT: case TOK_STRING: case TOK_IDENT:
+	case TOK_MINUS: case TOK_PLUS: case TOK_BANG:
+		return true;
+	case TOK_KEYWORD: {
+		struct value v;
+		if (builtin_vector((enum kw)t->kw, &v, t->pos))
+			return true;
+		switch (t->kw) {
+		case KW_PI: case KW_TRUE: case KW_YES: case KW_ON: case KW_FALSE: case KW_NO: case KW_OFF:
+		case KW_CLOCK: case KW_CLOCK_DELTA: case KW_CLOCK_ON: case KW_IMAGE_WIDTH: case KW_IMAGE_HEIGHT:
+		case KW_VERSION: case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT: case KW_SRGB:
+		case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT: case KW_COLOR: case KW_COLOUR:
+		case KW_MIN: case KW_MAX: case KW_VLENGTH: case KW_VNORMALIZE: case KW_VDOT: case KW_VCROSS:
+			return true;
+		default:
+			for (size_t i = 0; i < sizeof float_fns / sizeof float_fns[0]; i++)
+				if (float_fns[i].kw == t->kw)
+					return true;
+			return false;
+		}
+	}
+	default:
+		return false;
+	}
+}
+
+double parse_float(struct parser *p)
+{
+	struct value v = parse_expression(p);
+	if (v.kind != VAL_FLOAT)
+		parse_error_at(p, v.pos, "expected a float, found a %s", val_kind_name(v.kind));
+	return v.v[0];
+}
+
+vec3 parse_vector(struct parser *p)
+{
+	struct value v = parse_expression(p);
+	if (v.kind == VAL_FLOAT || v.kind == VAL_VECTOR) {
+		if (v.n > 3 && v.kind == VAL_VECTOR)
+			parse_error_at(p, v.pos, "expected a 3-component vector, found a %d-component one", v.n);
+		widen(&v, 3);
+		return v3(v.v[0], v.v[1], v.v[2]);
+	}
+	parse_error_at(p, v.pos, "expected a vector, found a %s", val_kind_name(v.kind));
+}
+
+struct rgbft parse_color(struct parser *p)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	if (parse_is_kw(p, KW_COLOR) || parse_is_kw(p, KW_COLOUR))
+		parse_advance(p);
+	struct value c = parse_color_body(p, at);
+	struct rgbft r = {c.v[0], c.v[1], c.v[2], c.v[3], c.v[4]};
+	return r;
+}
+
+const char *parse_string(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind == TOK_STRING) {
+		const char *s = t->str;
+		parse_advance(p);
+		return s;
+	}
+	if (t->kind == TOK_IDENT) {
+		struct value *v = parse_lookup(p, t->str);
+		if (v && v->kind == VAL_STRING) {
+			parse_advance(p);
+			return v->str;
+		}
+		if (!v)
+			parse_error(p, "undefined identifier '%s'", t->str);
+		parse_error(p, "expected a string, but '%s' is a %s", t->str, val_kind_name(v->kind));
+	}
+	parse_expected(p, "a string");
+}

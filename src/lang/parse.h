@@ -1,0 +1,35 @@
+/* parse.h: the language front end's one entry point. It reads a scene
+ * file, runs its directives and builds the scene through the builder API;
+ * it never reaches into the renderer. */
+#ifndef LUCENT_PARSE_H
+#define LUCENT_PARSE_H
+
+#include "lang/diag.h"
+#include "lang/source.h"
+#include "scene/scene.h"
+
+#include <stdio.h>
+
+struct parse_define {
+	const char *name;
+	double value;
+};
+
+struct parse_opts {
+	const char *input;              /* scene path, or "-" for standard input */
+	const char *const *lib_paths;   /* +L folders, searched in order */
+	size_t nlib_paths;
+	const char *stdlib_dir;         /* lucent's include library; may be NULL */
+	const struct parse_define *defines; /* Declare=NAME=VALUE */
+	size_t ndefines;
+	int image_width, image_height;  /* for the built-in identifiers */
+	double clock;
+	FILE *debug_out;                /* where #debug text goes */
+};
+
+/* Parse o->input into s. Returns 0 on success, 1 after reporting an error
+ * through d. All parse-time memory is released on both paths; what the
+ * scene received belongs to the scene. */
+int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, struct scene *s);
+
+#endif

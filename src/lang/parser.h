@@ -1,0 +1,102 @@
+/* parser.h: the parser's state, shared by the files of the front end
+ * (parse.c: token stream and directives; expr.c: expressions; stmt.c:
+ * scene statements). Not for use outside src/lang/. */
+#ifndef LUCENT_PARSER_H
+#define LUCENT_PARSER_H
+
+#include "lang/lex.h"
+#include "lang/parse.h"
+#include "lang/sym.h"
+#include "lang/value.h"
+
+#include <setjmp.h>
+
+enum { MAX_FRAMES = 200, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256 };
+
+enum frame_kind { FRAME_FILE };
+
+/* A source of tokens being read: a file (or, later, a macro body). */
+struct frame {
+	enum frame_kind kind;
+	uint32_t file;
+	const struct token *toks;
+	size_t pos, end;
+	struct srcpos from;   /* where it was entered (the #include) */
+	struct symtab *locals; /* #local scope of this file */
+};
+
+/* Something to free if the parse fails before it is handed on. */
+struct owned {
+	void *ptr;
+	void (*free)(void *);
+};
+
+struct parser {
+	struct srcmgr *sm;
+	struct diag *d;
+	const struct parse_opts *o;
+	struct scene *scene;
+	struct interner *names;
+	jmp_buf *boundary;           /* where errors unwind to */
+
+	struct frame frames[MAX_FRAMES];
+	int nframes;
+	struct token cur;            /* the lookahead token, valid if have_cur */
+	bool have_cur;               /* tokens are fetched lazily, so a directive
+	                              * after a statement runs only once the
+	                              * statement is complete */
+	struct token prev;           /* the token consumed last, for positions */
+
+	struct symtab *globals;
+	double version;
+	int expr_depth;
+
+	struct owned owned[MAX_OWNED];
+	int nowned;
+	struct texture *default_tex; /* #default { texture }: one reference */
+};
+
+/* Errors: report at pos (or at the current token) and unwind. */
+_Noreturn void parse_error_at(struct parser *p, struct srcpos pos, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
+_Noreturn void parse_error(struct parser *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* "expected X, found Y" at the current token. */
+_Noreturn void parse_expected(struct parser *p, const char *what);
+void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* The token stream (directives already run). parse_peek returns the
+ * current token, fetching it if needed; parse_advance consumes it. */
+const struct token *parse_peek(struct parser *p);
+void parse_advance(struct parser *p);
+bool parse_is(struct parser *p, enum tok_kind k);
+bool parse_is_kw(struct parser *p, enum kw k);
+bool parse_accept(struct parser *p, enum tok_kind k);
+bool parse_accept_kw(struct parser *p, enum kw k);
+void parse_expect(struct parser *p, enum tok_kind k);
+
+/* Ownership during a parse: protect a pointer until released. */
+int parse_own(struct parser *p, void *ptr, void (*fn)(void *));
+void parse_release(struct parser *p, int slot);
+
+/* Symbols: the innermost binding of name, or NULL. */
+struct value *parse_lookup(struct parser *p, const char *name);
+
+/* Expressions (expr.c). */
+struct value parse_expression(struct parser *p);
+double parse_float(struct parser *p);
+vec3 parse_vector(struct parser *p);
+struct rgbft parse_color(struct parser *p);
+/* Is the current token the start of an expression? */
+bool parse_starts_expression(struct parser *p);
+/* A string: a literal, a string identifier or a string function call. It
+ * reads nothing past its last token (so #include can enter the file at
+ * once). */
+const char *parse_string(struct parser *p);
+
+/* Statements (stmt.c). */
+void parse_statement(struct parser *p);
+/* A scene-item value for #declare when the right-hand side is not an
+ * expression (sphere {...}, pigment {...}); false if not one. */
+bool parse_item_value(struct parser *p, struct value *out);
+
+#endif

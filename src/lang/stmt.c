@@ -1,0 +1,576 @@
+/* stmt.c: the scene statements: objects and their modifiers, textures,
+ * lights, the camera, background and global settings. Each grammar
+ * function names its production above it. */
+#include "lang/parser.h"
+
+#include "geom/shapes.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static void free_object_cb(void *o) { object_free(o); }
+static void free_texture_holder_cb(void *h)
+{
+	texture_unref(*(struct texture **)h);
+	free(h);
+}
+
+/* If the current token is an identifier, its value (an undefined one is
+ * an error); otherwise NULL. Does not consume it. */
+static const struct value *ident_value(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_IDENT)
+		return NULL;
+	const struct value *v = parse_lookup(p, t->str);
+	if (!v)
+		parse_error(p, "undefined identifier '%s'", t->str);
+	return v;
+}
+
+static void wrong_kind(struct parser *p, const struct value *v, const char *want)
+{
+	parse_error(p, "'%s' is a %s, not %s", parse_peek(p)->str, val_kind_name(v->kind), want);
+}
+
+/* ---- transforms ---- */
+
+/* transform_item := translate VECTOR | rotate VECTOR | scale VECTOR
+ *                 | matrix < 12 floats > */
+static bool parse_transform_item(struct parser *p, struct xform *out)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	struct srcpos at = t->pos;
+	switch (t->kw) {
+	case KW_TRANSLATE:
+		parse_advance(p);
+		*out = xform_translate(parse_vector(p));
+		return true;
+	case KW_ROTATE:
+		parse_advance(p);
+		*out = xform_rotate(parse_vector(p));
+		return true;
+	case KW_SCALE: {
+		parse_advance(p);
+		vec3 s = parse_vector(p);
+		/* POV-Ray turns a zero scale factor into 1, with a warning. */
+		double *c[3] = {&s.x, &s.y, &s.z};
+		for (int i = 0; i < 3; i++)
+			if (*c[i] == 0) {
+				parse_warning_at(p, at, "scale by 0 changed to scale by 1");
+				*c[i] = 1;
+			}
+		*out = xform_scale(s);
+		return true;
+	}
+	case KW_MATRIX: {
+		parse_advance(p);
+		parse_expect(p, TOK_LT);
+		double m[12];
+		for (int i = 0; i < 12; i++) {
+			if (i > 0)
+				parse_expect(p, TOK_COMMA);
+			struct value e = parse_expression(p);
+			if (e.kind != VAL_FLOAT)
+				parse_error_at(p, e.pos, "a matrix entry must be a float");
+			m[i] = e.v[0];
+		}
+		parse_expect(p, TOK_GT);
+		*out = xform_matrix(m);
+		if (mat_is_identity(&out->inv) && !mat_is_identity(&out->fwd))
+			parse_error_at(p, at, "this matrix cannot be inverted (it flattens space)");
+		return true;
+	}
+	default:
+		return false;
+	}
+}
+
+/* ---- textures ---- */
+
+/* pigment := pigment '{' [IDENT] [color] '}' */
+static void parse_pigment(struct parser *p, struct pigment *pig)
+{
+	parse_advance(p); /* pigment */
+	parse_expect(p, TOK_LBRACE);
+	const struct value *v = ident_value(p);
+	if (v && v->kind == VAL_PIGMENT) {
+		*pig = *v->pig;
+		parse_advance(p);
+	}
+	while (!parse_is(p, TOK_RBRACE)) {
+		if (parse_starts_expression(p)) {
+			pig->kind = PIGMENT_SOLID;
+			pig->color = parse_color(p);
+			continue;
+		}
+		struct xform t;
+		if (parse_transform_item(p, &t))
+			continue; /* a solid colour is the same everywhere */
+		parse_expected(p, "a color or a pigment modifier");
+	}
+	parse_advance(p);
+}
+
+static rgb parse_rgb_or_float(struct parser *p)
+{
+	struct value e = parse_expression(p);
+	if (e.kind == VAL_FLOAT)
+		return rgb_make(e.v[0], e.v[0], e.v[0]);
+	if (e.kind == VAL_VECTOR || e.kind == VAL_COLOR)
+		return rgb_make(e.v[0], e.n > 1 ? e.v[1] : 0, e.n > 2 ? e.v[2] : 0);
+	parse_error_at(p, e.pos, "expected a float or a color, found a %s", val_kind_name(e.kind));
+}
+
+/* finish := finish '{' [IDENT] { finish_item } '}' */
+static void parse_finish(struct parser *p, struct finish *f)
+{
+	parse_advance(p); /* finish */
+	parse_expect(p, TOK_LBRACE);
+	const struct value *v = ident_value(p);
+	if (v) {
+		if (v->kind != VAL_FINISH)
+			wrong_kind(p, v, "a finish");
+		*f = *v->fin;
+		parse_advance(p);
+	}
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a finish item or '}'");
+		switch (t->kw) {
+		case KW_AMBIENT: parse_advance(p); f->ambient = parse_rgb_or_float(p); break;
+		case KW_EMISSION: parse_advance(p); f->emission = parse_rgb_or_float(p); break;
+		case KW_DIFFUSE: parse_advance(p); f->diffuse = parse_float(p); break;
+		case KW_BRILLIANCE: parse_advance(p); f->brilliance = parse_float(p); break;
+		case KW_PHONG: parse_advance(p); f->phong = parse_float(p); break;
+		case KW_PHONG_SIZE: parse_advance(p); f->phong_size = parse_float(p); break;
+		case KW_SPECULAR: parse_advance(p); f->specular = parse_float(p); break;
+		case KW_ROUGHNESS: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double r = parse_float(p);
+			if (r <= 0)
+				parse_error_at(p, at, "roughness must be greater than 0");
+			f->roughness = r;
+			break;
+		}
+		case KW_REFLECTION: parse_advance(p); f->reflection = parse_rgb_or_float(p); break;
+		case KW_METALLIC:
+			parse_advance(p);
+			f->metallic = true;
+			if (parse_starts_expression(p))
+				f->metallic = parse_float(p) != 0;
+			break;
+		default:
+			parse_expected(p, "a finish item or '}'");
+		}
+	}
+}
+
+/* Make *tex a texture this object may modify alone. */
+static struct texture *private_texture(struct parser *p, struct texture **tex)
+{
+	if (!*tex)
+		*tex = p->default_tex ? texture_copy(p->default_tex) : texture_new();
+	else if ((*tex)->refs > 1) {
+		struct texture *c = texture_copy(*tex);
+		texture_unref(*tex);
+		*tex = c;
+	}
+	return *tex;
+}
+
+/* texture := texture '{' [IDENT] { pigment | finish | transform } '}'
+ * Reads into *tex (created or made private as needed). */
+static void parse_texture(struct parser *p, struct texture **tex)
+{
+	parse_advance(p); /* texture */
+	parse_expect(p, TOK_LBRACE);
+	const struct value *v = ident_value(p);
+	if (v) {
+		if (v->kind != VAL_TEXTURE)
+			wrong_kind(p, v, "a texture");
+		texture_unref(*tex);
+		*tex = texture_ref(v->tex);
+		parse_advance(p);
+	} else {
+		/* A texture statement starts from the defaults, not from what the
+		 * object had. */
+		texture_unref(*tex);
+		*tex = p->default_tex ? texture_copy(p->default_tex) : texture_new();
+	}
+	while (!parse_accept(p, TOK_RBRACE)) {
+		struct xform t;
+		if (parse_is_kw(p, KW_PIGMENT))
+			parse_pigment(p, &private_texture(p, tex)->pigment);
+		else if (parse_is_kw(p, KW_FINISH))
+			parse_finish(p, &private_texture(p, tex)->finish);
+		else if (!parse_transform_item(p, &t))
+			parse_expected(p, "pigment, finish, a transformation or '}'");
+	}
+}
+
+/* ---- objects ---- */
+
+/* object_modifier := texture | pigment | finish | transform_item
+ *   | no_shadow | no_image | no_reflection | hollow [bool]
+ *   | double_illuminate | inverse */
+static bool parse_object_modifier(struct parser *p, struct object *o)
+{
+	struct xform t;
+	if (parse_transform_item(p, &t)) {
+		object_transform(o, &t);
+		return true;
+	}
+	const struct token *tk = parse_peek(p);
+	if (tk->kind != TOK_KEYWORD)
+		return false;
+	switch (tk->kw) {
+	case KW_TEXTURE: parse_texture(p, &o->tex); return true;
+	case KW_PIGMENT: parse_pigment(p, &private_texture(p, &o->tex)->pigment); return true;
+	case KW_FINISH: parse_finish(p, &private_texture(p, &o->tex)->finish); return true;
+	case KW_NO_SHADOW: parse_advance(p); o->flags |= OBJ_NO_SHADOW; return true;
+	case KW_NO_IMAGE: parse_advance(p); o->flags |= OBJ_NO_IMAGE; return true;
+	case KW_NO_REFLECTION: parse_advance(p); o->flags |= OBJ_NO_REFLECTION; return true;
+	case KW_DOUBLE_ILLUMINATE: parse_advance(p); o->flags |= OBJ_DOUBLE_ILLUMINATE; return true;
+	case KW_INVERSE: parse_advance(p); o->flags ^= OBJ_INVERSE; return true;
+	case KW_HOLLOW:
+		parse_advance(p);
+		o->flags |= OBJ_HOLLOW;
+		if (parse_starts_expression(p) && parse_float(p) == 0)
+			o->flags &= ~(unsigned)OBJ_HOLLOW;
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* The primitive's own arguments, after its '{'. */
+static struct object *parse_shape_args(struct parser *p, enum kw k, struct srcpos at)
+{
+	switch (k) {
+	case KW_SPHERE: {
+		/* sphere := sphere '{' VECTOR ',' FLOAT ... */
+		vec3 c = parse_vector(p);
+		parse_expect(p, TOK_COMMA);
+		double r = parse_float(p);
+		return sphere_new(c, r, at);
+	}
+	case KW_PLANE: {
+		/* plane := plane '{' VECTOR ',' FLOAT ... */
+		struct srcpos npos = parse_peek(p)->pos;
+		vec3 n = parse_vector(p);
+		if (v3_len(n) == 0)
+			parse_error_at(p, npos, "a plane's normal cannot be the zero vector");
+		parse_expect(p, TOK_COMMA);
+		double d = parse_float(p);
+		return plane_new(n, d, at);
+	}
+	case KW_BOX: {
+		/* box := box '{' VECTOR ',' VECTOR ... */
+		vec3 a = parse_vector(p);
+		parse_expect(p, TOK_COMMA);
+		vec3 b = parse_vector(p);
+		return box_new(a, b, at);
+	}
+	default:
+		return NULL;
+	}
+}
+
+static bool is_object_keyword(enum kw k)
+{
+	return k == KW_SPHERE || k == KW_PLANE || k == KW_BOX || k == KW_OBJECT;
+}
+
+/* object := (sphere | plane | box) '{' args { object_modifier } '}'
+ *         | object '{' IDENT { object_modifier } '}'
+ * Returns the new object, owned by the caller. */
+static struct object *parse_object(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	enum kw k = (enum kw)t->kw;
+	struct srcpos at = t->pos;
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	struct object *o;
+	if (k == KW_OBJECT) {
+		const struct value *v = ident_value(p);
+		if (!v)
+			parse_expected(p, "an object identifier");
+		if (v->kind != VAL_OBJECT)
+			wrong_kind(p, v, "an object");
+		o = object_copy(v->obj);
+		o->pos = at;
+		parse_advance(p);
+	} else {
+		o = parse_shape_args(p, k, at);
+	}
+	int slot = parse_own(p, o, free_object_cb);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		if (!parse_object_modifier(p, o))
+			parse_expected(p, "an object modifier or '}'");
+	}
+	if (!o->tex && p->default_tex)
+		o->tex = texture_ref(p->default_tex);
+	parse_release(p, slot);
+	return o;
+}
+
+/* ---- lights and camera ---- */
+
+/* light_source := light_source '{' VECTOR [','] COLOR { light_item } '}' */
+static void parse_light(struct parser *p, struct light *l)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	memset(l, 0, sizeof *l);
+	l->kind = LIGHT_POINT;
+	l->srcpos = at;
+	l->pos = parse_vector(p);
+	parse_accept(p, TOK_COMMA);
+	struct rgbft c = parse_color(p);
+	l->color = rgb_of(c);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		struct xform t;
+		if (parse_transform_item(p, &t)) {
+			l->pos = mat_point(&t.fwd, l->pos);
+			continue;
+		}
+		if (parse_accept_kw(p, KW_SHADOWLESS)) {
+			l->shadowless = true;
+			continue;
+		}
+		if (parse_accept_kw(p, KW_POINT_AT)) {
+			(void)parse_vector(p); /* only spotlights use it */
+			continue;
+		}
+		parse_expected(p, "a light_source item or '}'");
+	}
+}
+
+/* camera := camera '{' [perspective] { camera_item } '}'
+ * camera_item := location V | look_at V | angle F | right V | up V
+ *              | direction V | sky V | transform_item */
+static void parse_camera(struct parser *p, struct camera *c)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	const struct value *v = ident_value(p);
+	if (v) {
+		if (v->kind != VAL_CAMERA)
+			wrong_kind(p, v, "a camera");
+		*c = *v->cam;
+		parse_advance(p);
+	}
+	parse_accept_kw(p, KW_PERSPECTIVE);
+	double angle = -1;
+	struct srcpos angle_pos = {0};
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		struct srcpos at = t->pos;
+		struct xform xf;
+		if (parse_transform_item(p, &xf)) {
+			camera_transform(c, &xf);
+			continue;
+		}
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a camera item or '}'");
+		switch (t->kw) {
+		case KW_LOCATION: parse_advance(p); c->location = parse_vector(p); break;
+		case KW_RIGHT: parse_advance(p); c->right = parse_vector(p); break;
+		case KW_UP: parse_advance(p); c->up = parse_vector(p); break;
+		case KW_DIRECTION: parse_advance(p); c->direction = parse_vector(p); break;
+		case KW_SKY: parse_advance(p); c->sky = parse_vector(p); break;
+		case KW_ANGLE:
+			parse_advance(p);
+			angle_pos = parse_peek(p)->pos;
+			angle = parse_float(p);
+			if (!(angle > 0 && angle < 180))
+				parse_error_at(p, angle_pos, "a perspective camera's angle must be between 0 and 180 degrees, not %g", angle);
+			break;
+		case KW_LOOK_AT: {
+			parse_advance(p);
+			vec3 at_pt = parse_vector(p);
+			if (!camera_look_at(c, at_pt))
+				parse_error_at(p, at, "look_at cannot point along the sky vector or at the camera's own location");
+			break;
+		}
+		default:
+			parse_expected(p, "a camera item or '}'");
+		}
+	}
+	/* The angle fixes the direction's length from the final right vector. */
+	if (angle > 0)
+		camera_set_angle(c, angle);
+}
+
+/* ---- global settings, background ---- */
+
+/* global_settings := global_settings '{' { setting } '}' */
+static void parse_global_settings(struct parser *p)
+{
+	struct global_settings *gs = &p->scene->gs;
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a global setting or '}'");
+		switch (t->kw) {
+		case KW_ASSUMED_GAMMA: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double g = parse_float(p);
+			if (g <= 0)
+				parse_error_at(p, at, "assumed_gamma must be greater than 0");
+			gs->assumed_gamma = g;
+			gs->assumed_gamma_set = true;
+			break;
+		}
+		case KW_MAX_TRACE_LEVEL: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double m = parse_float(p);
+			if (m < 1 || m > 256)
+				parse_error_at(p, at, "max_trace_level must be between 1 and 256");
+			gs->max_trace_level = (int)m;
+			break;
+		}
+		case KW_ADC_BAILOUT: parse_advance(p); gs->adc_bailout = parse_float(p); break;
+		case KW_AMBIENT_LIGHT: parse_advance(p); gs->ambient_light = rgb_of(parse_color(p)); break;
+		default:
+			parse_expected(p, "a global setting or '}'");
+		}
+	}
+}
+
+/* background := background '{' COLOR '}' */
+static void parse_background(struct parser *p)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	p->scene->background = parse_color(p);
+	parse_expect(p, TOK_RBRACE);
+}
+
+/* ---- entry points ---- */
+
+static void free_pigment_cb(void *x) { free(x); }
+
+bool parse_item_value(struct parser *p, struct value *out)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	struct srcpos at = t->pos;
+	enum kw k = (enum kw)t->kw;
+	memset(out, 0, sizeof *out);
+	out->pos = at;
+	if (is_object_keyword(k)) {
+		out->kind = VAL_OBJECT;
+		out->obj = parse_object(p);
+		return true;
+	}
+	switch (k) {
+	case KW_PIGMENT: {
+		struct pigment *pig = calloc(1, sizeof *pig);
+		if (!pig) abort();
+		int slot = parse_own(p, pig, free_pigment_cb);
+		parse_pigment(p, pig);
+		parse_release(p, slot);
+		out->kind = VAL_PIGMENT;
+		out->pig = pig;
+		return true;
+	}
+	case KW_FINISH: {
+		struct finish *f = malloc(sizeof *f);
+		if (!f) abort();
+		*f = finish_default();
+		int slot = parse_own(p, f, free_pigment_cb);
+		parse_finish(p, f);
+		parse_release(p, slot);
+		out->kind = VAL_FINISH;
+		out->fin = f;
+		return true;
+	}
+	case KW_TEXTURE: {
+		/* parse_texture replaces the texture it is given, so what is
+		 * protected is a holder of the current pointer. */
+		struct texture **holder = calloc(1, sizeof *holder);
+		if (!holder) abort();
+		int slot = parse_own(p, holder, free_texture_holder_cb);
+		parse_texture(p, holder);
+		out->kind = VAL_TEXTURE;
+		out->tex = *holder;
+		*holder = NULL;
+		parse_release(p, slot);
+		free(holder);
+		return true;
+	}
+	case KW_CAMERA: {
+		struct camera *c = malloc(sizeof *c);
+		if (!c) abort();
+		*c = camera_default();
+		int slot = parse_own(p, c, free_pigment_cb);
+		parse_camera(p, c);
+		parse_release(p, slot);
+		out->kind = VAL_CAMERA;
+		out->cam = c;
+		return true;
+	}
+	case KW_LIGHT_SOURCE: {
+		struct light *l = malloc(sizeof *l);
+		if (!l) abort();
+		int slot = parse_own(p, l, free_pigment_cb);
+		parse_light(p, l);
+		parse_release(p, slot);
+		out->kind = VAL_LIGHT;
+		out->light = l;
+		return true;
+	}
+	default:
+		return false;
+	}
+}
+
+/* statement := object | light_source | camera | global_settings
+ *            | background */
+void parse_statement(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind == TOK_KEYWORD) {
+		enum kw k = (enum kw)t->kw;
+		if (is_object_keyword(k)) {
+			struct object *o = parse_object(p);
+			scene_add_object(p->scene, o);
+			return;
+		}
+		switch (k) {
+		case KW_LIGHT_SOURCE: {
+			struct light l;
+			parse_light(p, &l);
+			scene_add_light(p->scene, &l);
+			return;
+		}
+		case KW_CAMERA: {
+			struct camera c = camera_default();
+			parse_camera(p, &c);
+			p->scene->camera = c;
+			return;
+		}
+		case KW_GLOBAL_SETTINGS: parse_global_settings(p); return;
+		case KW_BACKGROUND: parse_background(p); return;
+		default: break;
+		}
+	}
+	if (t->kind == TOK_IDENT && !parse_lookup(p, t->str))
+		parse_error(p, "undefined identifier '%s'", t->str);
+	parse_expected(p, "an object, light_source, camera, global_settings, background or directive");
+}

@@ -1,0 +1,65 @@
+/* value.c: values (see value.h). */
+#include "lang/value.h"
+
+#include "scene/camera.h"
+#include "scene/light.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+const char *val_kind_name(enum val_kind k)
+{
+	switch (k) {
+	case VAL_NONE: return "nothing";
+	case VAL_FLOAT: return "float";
+	case VAL_VECTOR: return "vector";
+	case VAL_COLOR: return "color";
+	case VAL_STRING: return "string";
+	case VAL_OBJECT: return "object";
+	case VAL_TEXTURE: return "texture";
+	case VAL_PIGMENT: return "pigment";
+	case VAL_FINISH: return "finish";
+	case VAL_CAMERA: return "camera";
+	case VAL_LIGHT: return "light_source";
+	case VAL_TRANSFORM: return "transform";
+	}
+	return "?";
+}
+
+void val_clear(struct value *v)
+{
+	switch (v->kind) {
+	case VAL_OBJECT: object_free(v->obj); break;
+	case VAL_TEXTURE: texture_unref(v->tex); break;
+	case VAL_PIGMENT: free(v->pig); break;
+	case VAL_FINISH: free(v->fin); break;
+	case VAL_CAMERA: free(v->cam); break;
+	case VAL_LIGHT: free(v->light); break;
+	case VAL_TRANSFORM: free(v->xf); break;
+	default: break;
+	}
+	v->kind = VAL_NONE;
+}
+
+static void *dup_bytes(const void *p, size_t n)
+{
+	void *c = malloc(n);
+	if (!c) abort();
+	return memcpy(c, p, n);
+}
+
+struct value val_copy(const struct value *src)
+{
+	struct value v = *src;
+	switch (src->kind) {
+	case VAL_OBJECT: v.obj = object_copy(src->obj); break;
+	case VAL_TEXTURE: v.tex = texture_ref(src->tex); break;
+	case VAL_PIGMENT: v.pig = dup_bytes(src->pig, sizeof *src->pig); break;
+	case VAL_FINISH: v.fin = dup_bytes(src->fin, sizeof *src->fin); break;
+	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
+	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;
+	case VAL_TRANSFORM: v.xf = dup_bytes(src->xf, sizeof *src->xf); break;
+	default: break;
+	}
+	return v;
+}

@@ -1,0 +1,246 @@
+/* main.c: the lucent command: options, then parse → prepare → render →
+ * write, with timings and statistics. Exit status: 0 done, 1 error,
+ * 2 interrupted. */
+#include "config.h"
+
+#include "image/framebuffer.h"
+#include "image/output.h"
+#include "lang/diag.h"
+#include "lang/parse.h"
+#include "lang/source.h"
+#include "options.h"
+#include "render/prepare.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifndef LUCENT_STDLIB_DIR
+#define LUCENT_STDLIB_DIR "/usr/local/share/lucent"
+#endif
+
+/* The one piece of process-wide state: set by SIGINT/SIGTERM, read by the
+ * render threads between tiles and by the writer before it renames. */
+static volatile sig_atomic_t interrupted;
+
+static void on_signal(int sig)
+{
+	(void)sig;
+	interrupted = 1;
+}
+
+static double now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static int core_count(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n > 0 ? (int)n : 1;
+}
+
+static bool is_dir(const char *p)
+{
+	struct stat st;
+	return p && stat(p, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+/* The default output name: the scene's path with the format's extension
+ * (POV-Ray's rule); "stdin.<ext>" when reading standard input. */
+static char *default_output(const char *input, enum img_format f)
+{
+	const char *ext = img_format_ext(f);
+	const char *base = strcmp(input, "-") == 0 ? "stdin" : input;
+	const char *slash = strrchr(base, '/');
+	const char *dot = strrchr(base, '.');
+	size_t stem = dot && (!slash || dot > slash) ? (size_t)(dot - base) : strlen(base);
+	char *out = malloc(stem + strlen(ext) + 2);
+	if (!out) abort();
+	sprintf(out, "%.*s.%s", (int)stem, base, ext);
+	return out;
+}
+
+static void print_stats(FILE *out, const struct stats *st, unsigned features, double tparse,
+                        double tprep, double trender, int w, int h)
+{
+	fprintf(out, "Render statistics\n");
+	fprintf(out, "  image       %d x %d\n", w, h);
+	fprintf(out, "  parse       %.3f s\n", tparse);
+	fprintf(out, "  prepare     %.3f s\n", tprep);
+	fprintf(out, "  render      %.3f s\n", trender);
+	fprintf(out, "  pixels      %llu\n", (unsigned long long)st->pixels);
+	fprintf(out, "  samples     %llu\n", (unsigned long long)st->samples);
+	unsigned long long total = 0;
+	for (int k = 0; k < RAY__COUNT; k++)
+		total += st->rays[k];
+	fprintf(out, "  rays        %llu\n", total);
+	for (int k = 0; k < RAY__COUNT; k++)
+		fprintf(out, "    %-10s %llu\n", stats_ray_name((enum ray_kind)k), (unsigned long long)st->rays[k]);
+	if (st->rays[RAY_SHADOW])
+		fprintf(out, "  shadow rays answered by the last blocker: %llu\n", (unsigned long long)st->shadow_cache_hits);
+	fputs("  simulated  ", out);
+	bool any = false;
+	for (int i = 0; i < FEAT__COUNT; i++)
+		if (features & (1u << i)) {
+			fprintf(out, "%s%s", any ? ", " : " ", feature_name((enum feature)(1u << i)));
+			any = true;
+		}
+	fputs(any ? "\n" : " (none)\n", out);
+	fputs("  skipped    ", out);
+	any = false;
+	for (int i = 0; i < FEAT__COUNT; i++)
+		if (!(features & (1u << i))) {
+			fprintf(out, "%s%s", any ? ", " : " ", feature_name((enum feature)(1u << i)));
+			any = true;
+		}
+	fputs(any ? " (the scene cannot show them)\n" : " (none)\n", out);
+}
+
+int main(int argc, char **argv)
+{
+	struct options opt;
+	options_init(&opt);
+	int status = 1;
+	struct srcmgr *sm = NULL;
+	struct scene *scene = NULL;
+	struct prepared *prep = NULL;
+	struct framebuffer *fb = NULL;
+
+	if (options_parse(&opt, argc, argv, stderr) != 0)
+		goto done;
+	if (opt.help) {
+		options_usage(stdout);
+		status = 0;
+		goto done;
+	}
+	if (opt.version) {
+		printf("lucent %s\n", PACKAGE_VERSION);
+		status = 0;
+		goto done;
+	}
+	if (!opt.input) {
+		fprintf(stderr, "lucent: error: no scene file given (see lucent --help)\n");
+		goto done;
+	}
+	if (!opt.format_set && opt.output)
+		img_format_from_path(opt.output, &opt.format);
+	if (!opt.output)
+		opt.output = default_output(opt.input, opt.format);
+
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+
+	const char *stdlib_dir = getenv("LUCENT_STDLIB");
+	if (!stdlib_dir || !*stdlib_dir)
+		stdlib_dir = LUCENT_STDLIB_DIR;
+	if (!is_dir(stdlib_dir))
+		stdlib_dir = NULL;
+
+	sm = src_new();
+	struct diag diag;
+	diag_init(&diag, sm, stderr);
+	scene = scene_new();
+	struct parse_opts po = {
+		.input = opt.input,
+		.lib_paths = (const char *const *)opt.lib_paths,
+		.nlib_paths = opt.nlib_paths,
+		.stdlib_dir = stdlib_dir,
+		.defines = opt.defines,
+		.ndefines = opt.ndefines,
+		.image_width = opt.width,
+		.image_height = opt.height,
+		.clock = opt.clock,
+		.debug_out = stderr,
+	};
+	double t0 = now();
+	if (parse_scene(sm, &diag, &po, scene) != 0)
+		goto done;
+	if (interrupted) {
+		fprintf(stderr, "lucent: interrupted while parsing\n");
+		status = 2;
+		goto done;
+	}
+	/* POV-Ray 3.7: a 3.7 scene without assumed_gamma works linearly; an
+	 * older one gets no gamma handling at all. */
+	double gamma = scene->gs.assumed_gamma;
+	if (!scene->gs.assumed_gamma_set && scene->version < 3.7)
+		gamma = 0;
+	double t1 = now();
+	prep = prepare_scene(scene);
+	double t2 = now();
+
+	int row0 = opt.start_row >= 0 ? options_bound(opt.start_row, opt.height, false) : 0;
+	int row1 = opt.end_row >= 0 ? options_bound(opt.end_row, opt.height, true) : opt.height;
+	int col0 = opt.start_col >= 0 ? options_bound(opt.start_col, opt.width, false) : 0;
+	int col1 = opt.end_col >= 0 ? options_bound(opt.end_col, opt.width, true) : opt.width;
+	if (row0 >= row1 || col0 >= col1) {
+		fprintf(stderr, "lucent: error: the partial render region is empty (rows %d-%d, columns %d-%d)\n",
+		        row0 + 1, row1, col0 + 1, col1);
+		goto done;
+	}
+	fb = fb_new(opt.width, opt.height);
+	if (!fb) {
+		fprintf(stderr, "lucent: error: cannot allocate a %dx%d image\n", opt.width, opt.height);
+		goto done;
+	}
+	struct render_opts ro = {
+		.width = opt.width, .height = opt.height,
+		.row0 = row0, .row1 = row1, .col0 = col0, .col1 = col1,
+		.threads = opt.threads > 0 ? opt.threads : core_count(),
+		.progress = !opt.quiet && isatty(STDERR_FILENO),
+		.stop = &interrupted,
+	};
+	struct stats st;
+	memset(&st, 0, sizeof st);
+	bool complete = render_image(prep, &ro, fb, &st);
+	double t3 = now();
+	if (!complete || interrupted) {
+		fprintf(stderr, "lucent: interrupted; no image written\n");
+		status = 2;
+		goto done;
+	}
+	if (opt.output_to_file) {
+		struct img_out io = {
+			.path = opt.output, .format = opt.format, .bits = opt.bits,
+			.alpha = opt.alpha, .gamma = gamma, .stop = &interrupted,
+		};
+		char err[1024];
+		int rc = img_write(fb, &io, err, sizeof err);
+		if (rc == 2) {
+			fprintf(stderr, "lucent: interrupted; no image written\n");
+			status = 2;
+			goto done;
+		}
+		if (rc != 0) {
+			fprintf(stderr, "lucent: error: %s\n", err);
+			goto done;
+		}
+	}
+	if (!opt.quiet) {
+		print_stats(stderr, &st, prep->features, t1 - t0, t2 - t1, t3 - t2, opt.width, opt.height);
+		if (opt.output_to_file)
+			fprintf(stderr, "wrote %s\n", opt.output);
+	}
+	status = 0;
+done:
+	fb_free(fb);
+	prepared_free(prep);
+	scene_free(scene);
+	src_free(sm);
+	options_free(&opt);
+	return status;
+}

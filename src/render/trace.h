@@ -1,0 +1,34 @@
+/* trace.h: casting rays through a prepared scene and shading what they hit
+ * (Whitted: direct light with shadows, Phong-style highlights, mirror
+ * reflection). One tracer per thread: it holds that thread's statistics and
+ * scratch, so the per-ray path allocates nothing and shares no writes. */
+#ifndef LUCENT_TRACE_H
+#define LUCENT_TRACE_H
+
+#include "render/prepare.h"
+#include "render/stats.h"
+
+struct tracer {
+	const struct prepared *p;
+	struct stats stats;
+	const struct object **last_blocker; /* per light: the object that last shadowed it */
+};
+
+void tracer_init(struct tracer *tr, const struct prepared *p);
+void tracer_free(struct tracer *tr);
+
+/* Closest hit along r with tmin < t < tmax among objects without a `skip`
+ * flag (OBJ_NO_IMAGE for camera rays, OBJ_NO_REFLECTION for reflected). */
+bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h);
+
+/* The colour seen along r (direction need not be unit). `depth` counts the
+ * bounces so far (camera rays: 1). *hit_anything tells if an object (not
+ * the background) was seen, for the alpha channel. */
+rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything);
+
+/* The offset that keeps a secondary ray from finding its own surface: a
+ * relative tolerance on the magnitude of the coordinates involved, so the
+ * same scene behaves the same at 1e-4 scale and 1e5 units from the origin. */
+double trace_epsilon(vec3 p, vec3 from);
+
+#endif

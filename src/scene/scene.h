@@ -1,0 +1,39 @@
+/* scene.h: the scene the parser builds and the renderer reads: objects,
+ * lights, camera, background and global settings. The parser fills it only
+ * through these functions and the constructors in src/geom/shapes.h. */
+#ifndef LUCENT_SCENE_H
+#define LUCENT_SCENE_H
+
+#include "scene/camera.h"
+#include "scene/color.h"
+#include "scene/light.h"
+#include "scene/object.h"
+
+#include <stddef.h>
+
+struct global_settings {
+	double assumed_gamma;  /* the working gamma; 1.0: linear lighting */
+	bool assumed_gamma_set;
+	int max_trace_level;
+	double adc_bailout;
+	rgb ambient_light;
+};
+
+struct scene {
+	struct object **objects; /* owned */
+	size_t nobjects, cap_objects;
+	struct light *lights;
+	size_t nlights, cap_lights;
+	struct camera camera;
+	struct rgbft background;
+	struct global_settings gs;
+	double version;          /* #version in effect at the end of the parse */
+};
+
+struct scene *scene_new(void);
+void scene_free(struct scene *s);
+/* Takes ownership of o. */
+void scene_add_object(struct scene *s, struct object *o);
+void scene_add_light(struct scene *s, const struct light *l);
+
+#endif
