@@ -204,6 +204,11 @@ int main(int argc, char **argv)
 		.progress = !opt.quiet && isatty(STDERR_FILENO),
 		.stop = &interrupted,
 	};
+	if (opt.verbose && !opt.quiet)
+		fprintf(stderr, "lucent: %s: %zu objects (%zu unbounded), %zu lights, %zu BVH nodes; "
+		        "rendering rows %d-%d, columns %d-%d of %dx%d on %d threads\n",
+		        opt.input, scene->nobjects, prep->nunbounded, scene->nlights, bvh_node_count(prep->bvh),
+		        row0 + 1, row1, col0 + 1, col1, opt.width, opt.height, ro.threads);
 	struct stats st;
 	memset(&st, 0, sizeof st);
 	bool complete = render_image(prep, &ro, fb, &st);

@@ -195,7 +195,6 @@ static const struct { const char *sw; const char *what; } unimplemented[] = {
 	{"RTR", "real-time raytracing"}, {"RVP", "real-time viewport"}, {"RS", "radiosity"},
 	{"STP", "status update"}, {"HT", "histogram type"}, {"HN", "histogram name"},
 	{"HS", "histogram size"}, {"BM", "bounding method"}, {"BS", "block size"},
-	{"Z", "shell out"},
 };
 
 static bool starts_ci(const char *s, const char *prefix)

@@ -1,2 +1,143 @@
 #!/bin/sh
-exit 0
+# tests/cli.sh: the lucent command itself: --version, --help, output naming,
+# formats, exit statuses, error messages for bad options and missing files,
+# and that a failed or interrupted render never clobbers an existing image.
+. "${top_srcdir:-.}/tests/lib.sh"
+cd "$WORK" || exit 1
+
+cat > ok.pov <<'POV'
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, 1 pigment { color rgb <1, 0.5, 0.2> } }
+POV
+
+# --version and --help
+"$LUCENT" --version > out.txt 2>&1; rc=$?
+check "--version exits 0" [ $rc -eq 0 ]
+check "--version prints the version" grep -qE '^lucent [0-9]+\.[0-9]+\.[0-9]+$' out.txt
+"$LUCENT" --help > out.txt 2>&1; rc=$?
+check "--help exits 0" [ $rc -eq 0 ]
+check "--help lists +W" contains out.txt "+Wn"
+check "--help lists --threads" contains out.txt "--threads"
+
+# Default output name: the scene's name with .png, beside it.
+mkdir -p sub
+cp ok.pov sub/scene.pov
+"$LUCENT" -q +W16 +H12 sub/scene.pov > out.txt 2>&1; rc=$?
+check "render exits 0" [ $rc -eq 0 ]
+check "scene.pov renders scene.png beside it" [ -f sub/scene.png ]
+check "-q prints nothing for a clean scene" [ ! -s out.txt ]
+iinfo sub/scene.png > info.txt 2>&1
+check "default output is 16x12 8-bit PNG" grep -qE "16 x +12, 3 channel, uint8 png" info.txt
+
+# +O and the formats
+"$LUCENT" -q +W16 +H12 +Iok.pov +Oa.exr && iinfo a.exr > info.txt 2>&1
+check "+O with .exr writes OpenEXR" grep -q "openexr" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +FN16 +Ob16.png && iinfo b16.png > info.txt 2>&1
+check "+FN16 writes 16-bit PNG" grep -q "uint16 png" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +UA +Oalpha.png && iinfo alpha.png > info.txt 2>&1
+check "+UA writes an alpha channel" grep -q "4 channel" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +FT +Ot.tga && iinfo t.tga > info.txt 2>&1
+check "+FT writes TGA" grep -q "targa" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +Ot.tif && iinfo t.tif > info.txt 2>&1
+check ".tif writes TIFF" grep -q "tiff" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +FP +Op.ppm && iinfo p.ppm > info.txt 2>&1
+check "+FP writes PPM" grep -q "pnm" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +FJ +Oj.jpg && iinfo j.jpg > info.txt 2>&1
+check "+FJ writes JPEG" grep -q "jpeg" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov +FH +Oh.hdr && iinfo h.hdr > info.txt 2>&1
+check "+FH writes HDR" grep -q "hdr" info.txt
+"$LUCENT" -q +W16 +H12 ok.pov --output long.png && [ -f long.png ]
+check "--output FILE" [ $? -eq 0 ]
+rm -f nofile.png
+"$LUCENT" -q +W16 +H12 ok.pov -F +Onofile.png
+check "-F writes no file" [ ! -f nofile.png ]
+
+# +V says what is being rendered.
+"$LUCENT" +V -F +W16 +H12 ok.pov > out.txt 2>&1
+check "+V reports objects, lights and threads" grep -q "1 objects (0 unbounded), 1 lights" out.txt
+check "statistics report rays by kind" grep -qE "^    camera +192$" out.txt
+check "statistics report skipped effects" grep -q "skipped .*reflection" out.txt
+
+# Standard input
+"$LUCENT" -q +W16 +H12 - +Ostdin.png < ok.pov; rc=$?
+check "'-' reads the scene from standard input" [ $rc -eq 0 -a -f stdin.png ]
+
+# .ini files and Declare
+cat > r.ini <<'INI'
+; a POV-Ray style ini file
+[defaults]
+Width=24
+Height=18
+Output_File_Name=ini.png
+Declare=R=0.5
+INI
+cat > decl.pov <<'POV'
+#version 3.7;
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, R pigment { color rgb 1 } }
+POV
+"$LUCENT" -q r.ini decl.pov; rc=$?
+iinfo ini.png > info.txt 2>&1
+check "ini file sets size, output and Declare" grep -qE "24 x +18" info.txt
+
+# Errors: exit status 1 and a message naming the problem.
+"$LUCENT" -q missing.pov > err.txt 2>&1; rc=$?
+check "missing scene exits 1" [ $rc -eq 1 ]
+check "missing scene is named" contains err.txt "cannot read scene file 'missing.pov'"
+"$LUCENT" -q ok.pov +Zzz > err.txt 2>&1; rc=$?
+check "unknown switch exits 1" [ $rc -eq 1 ]
+check "unknown switch is named" contains err.txt "unknown switch '+Zzz'"
+"$LUCENT" -q ok.pov --frobnicate > err.txt 2>&1; rc=$?
+check "unknown long option exits 1" [ $rc -eq 1 ]
+check "unknown long option is named" contains err.txt "unknown option '--frobnicate'"
+"$LUCENT" -q ok.pov +Wabc > err.txt 2>&1; rc=$?
+check "bad width exits 1" [ $rc -eq 1 ]
+check "bad width is explained" contains err.txt "bad value in '+Wabc'"
+"$LUCENT" > err.txt 2>&1; rc=$?
+check "no scene exits 1" [ $rc -eq 1 ]
+check "no scene is explained" contains err.txt "no scene file given"
+"$LUCENT" -q +W16 +H12 ok.pov +A0.3 +Oaa.png > err.txt 2>&1; rc=$?
+check "unimplemented switch still renders" [ $rc -eq 0 -a -f aa.png ]
+check "unimplemented switch is reported by name" contains err.txt "switch '+A0.3' (antialiasing) is not implemented yet"
+"$LUCENT" -q ok.pov +SR0.9 +ER0.2 > err.txt 2>&1; rc=$?
+check "empty partial region exits 1" [ $rc -eq 1 ]
+
+# A failed render never clobbers an existing image, and leaves no temp file.
+cp sub/scene.png keep.png
+cp keep.png victim.png
+printf 'sphere { <0,0,0>, 1\n' > broken.pov
+"$LUCENT" -q broken.pov +Ovictim.png > err.txt 2>&1; rc=$?
+check "syntax error exits 1" [ $rc -eq 1 ]
+check "syntax error keeps the old image" cmp -s keep.png victim.png
+check "no temporary file is left" [ -z "$(ls -A | grep '\.tmp')" ]
+mkdir ro && chmod 555 ro
+if [ "$(id -u)" != 0 ]; then
+	"$LUCENT" -q +W16 +H12 ok.pov +Oro/x.png > err.txt 2>&1; rc=$?
+	check "unwritable folder exits 1" [ $rc -eq 1 ]
+fi
+
+# Interrupting a render: exit 2, the old image intact, no temporary file.
+cat > slow.pov <<'POV'
+#version 3.7;
+camera { location <0, 0, -3> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+sphere { 0, 1 pigment { color rgb 1 } finish { reflection 0.9 } }
+sphere { <0, 0, -4>, 0.5 pigment { color rgb 1 } finish { reflection 0.9 } }
+plane { y, -1 pigment { color rgb 0.5 } finish { reflection 0.5 } }
+POV
+cp keep.png victim.png
+"$LUCENT" -q +W6000 +H6000 +WT1 slow.pov +Ovictim.png > err.txt 2>&1 &
+pid=$!
+sleep 0.5
+kill -INT $pid
+wait $pid; rc=$?
+check "SIGINT exits 2" [ $rc -eq 2 ]
+check "SIGINT keeps the old image" cmp -s keep.png victim.png
+check "SIGINT leaves no temporary file" [ -z "$(ls -A | grep '\.tmp')" ]
+check "SIGINT says so" contains err.txt "interrupted"
+
+finish

@@ -200,6 +200,24 @@ static struct value parse_vector_literal(struct parser *p)
 	return vec(n, c, VAL_VECTOR, at);
 }
 
+int parse_number_list(struct parser *p, double *out, int max)
+{
+	parse_expect(p, TOK_LT);
+	int n = 0;
+	for (;;) {
+		struct value e = parse_cond(p, true);
+		need_float(p, &e, "a list entry");
+		if (n == max)
+			parse_error_at(p, e.pos, "too many entries: at most %d", max);
+		out[n++] = e.v[0];
+		if (parse_accept(p, TOK_COMMA))
+			continue;
+		if (parse_accept(p, TOK_GT))
+			return n;
+		parse_expected(p, "',' or '>'");
+	}
+}
+
 static double srgb_decode(double v)
 {
 	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);

@@ -92,6 +92,9 @@ bool parse_starts_expression(struct parser *p);
  * reads nothing past its last token (so #include can enter the file at
  * once). */
 const char *parse_string(struct parser *p);
+/* '<' FLOAT { ',' FLOAT } '>' with up to max entries (matrix, and lists
+ * longer than a vector); returns how many were read. */
+int parse_number_list(struct parser *p, double *out, int max);
 
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);

@@ -69,17 +69,9 @@ static bool parse_transform_item(struct parser *p, struct xform *out)
 	}
 	case KW_MATRIX: {
 		parse_advance(p);
-		parse_expect(p, TOK_LT);
 		double m[12];
-		for (int i = 0; i < 12; i++) {
-			if (i > 0)
-				parse_expect(p, TOK_COMMA);
-			struct value e = parse_expression(p);
-			if (e.kind != VAL_FLOAT)
-				parse_error_at(p, e.pos, "a matrix entry must be a float");
-			m[i] = e.v[0];
-		}
-		parse_expect(p, TOK_GT);
+		if (parse_number_list(p, m, 12) != 12)
+			parse_error_at(p, at, "a matrix needs exactly 12 numbers");
 		*out = xform_matrix(m);
 		if (mat_is_identity(&out->inv) && !mat_is_identity(&out->fwd))
 			parse_error_at(p, at, "this matrix cannot be inverted (it flattens space)");

@@ -1,0 +1,2 @@
+// expect: 2:15: unexpected character '@'
+sphere { 0, 1 @ }

@@ -1,0 +1,2 @@
+// expect: 2:16: division by zero
+#declare A = 1 / 0;

@@ -1,0 +1,2 @@
+// expect: 2:11: unknown escape sequence '\q' in string
+#debug "a \q b"
