@@ -150,6 +150,14 @@ int main(int argc, char **argv)
 	if (!is_dir(stdlib_dir))
 		stdlib_dir = NULL;
 
+	FILE *debug_out = stderr;
+	if (opt.debug_file) {
+		debug_out = fopen(opt.debug_file, "w");
+		if (!debug_out) {
+			fprintf(stderr, "lucent: error: cannot write debug file '%s': %s\n", opt.debug_file, strerror(errno));
+			goto done;
+		}
+	}
 	sm = src_new();
 	struct diag diag;
 	diag_init(&diag, sm, stderr);
@@ -164,10 +172,13 @@ int main(int argc, char **argv)
 		.image_width = opt.width,
 		.image_height = opt.height,
 		.clock = opt.clock,
-		.debug_out = stderr,
+		.debug_out = debug_out,
 	};
 	double t0 = now();
-	if (parse_scene(sm, &diag, &po, scene) != 0)
+	int prc = parse_scene(sm, &diag, &po, scene);
+	if (debug_out != stderr)
+		fclose(debug_out);
+	if (prc != 0)
 		goto done;
 	if (interrupted) {
 		fprintf(stderr, "lucent: interrupted while parsing\n");

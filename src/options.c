@@ -23,6 +23,7 @@ void options_free(struct options *o)
 {
 	free(o->input);
 	free(o->output);
+	free(o->debug_file);
 	for (size_t i = 0; i < o->nlib_paths; i++)
 		free(o->lib_paths[i]);
 	free(o->lib_paths);
@@ -53,6 +54,7 @@ void options_usage(FILE *out)
 "                 number, or a fraction of the size if between 0 and 1)\n"
 "  +V, -V         verbose output on or off\n"
 "  Declare=N=V    declare identifier N as the float V\n"
+"  +GDfile        write #debug text to file instead of the console\n"
 "  file.ini       read switches and Key=Value options from an .ini file\n"
 "\n"
 "  -q, --quiet    print only #debug/#warning text and errors\n"
@@ -189,7 +191,7 @@ static const struct { const char *sw; const char *what; } unimplemented[] = {
 	{"UL", "light buffer"}, {"UV", "vista buffer"}, {"SF", "start frame"}, {"EF", "end frame"},
 	{"X", "abort on key"}, {"P", "pause when done"}, {"C", "continue an interrupted render"},
 	{"B", "output buffer"}, {"HI", "header include"}, {"GS", "statistics stream"},
-	{"GR", "render stream"}, {"GW", "warning stream"}, {"GD", "debug stream"},
+	{"GR", "render stream"}, {"GW", "warning stream"},
 	{"GF", "fatal stream"}, {"GP", "parse stream"}, {"GI", "ini file log"},
 	{"SP", "mosaic preview start"}, {"EP", "mosaic preview end"}, {"TH", "tiling"},
 	{"RTR", "real-time raytracing"}, {"RVP", "real-time viewport"}, {"RS", "radiosity"},
@@ -230,6 +232,17 @@ static int switch_arg(struct options *o, char sign, const char *s, FILE *err, co
 	if (starts_ci(s, "EC")) { NUM(2, o->end_col = v, v >= 0, "must not be negative"); return 0; }
 	if (starts_ci(s, "UA") && s[2] == 0) { o->alpha = on; return 0; }
 	if (starts_ci(s, "GA") && s[2] == 0) { o->quiet = !on; return 0; }
+	if (starts_ci(s, "GD")) {
+		/* +GDfile: the debug stream (#debug text) into a file; -GD, +GD: to
+		 * the console. */
+		if (on && s[2])
+			set_str(&o->debug_file, s + 2);
+		else {
+			free(o->debug_file);
+			o->debug_file = NULL;
+		}
+		return 0;
+	}
 	if (toupper((unsigned char)s[0]) == 'D' && (s[1] == 0 || isdigit((unsigned char)s[1]) || s[1] == 'G')) {
 		/* Preview display: lucent has none; off is what it always does. */
 		if (on)

@@ -347,9 +347,12 @@ static void parse_light(struct parser *p, struct light *l)
 	}
 }
 
-/* camera := camera '{' [perspective] { camera_item } '}'
+/* camera := camera '{' [IDENT] [perspective] { camera_item } '}'
  * camera_item := location V | look_at V | angle F | right V | up V
- *              | direction V | sky V | transform_item */
+ *              | direction V | sky V | transform_item
+ * As in POV-Ray, the order of the items does not matter: the vectors are
+ * set first, then the angle fixes the direction's length, then look_at
+ * turns the frame, and the transformations apply last, in order. */
 static void parse_camera(struct parser *p, struct camera *c)
 {
 	parse_advance(p);
@@ -363,13 +366,18 @@ static void parse_camera(struct parser *p, struct camera *c)
 	}
 	parse_accept_kw(p, KW_PERSPECTIVE);
 	double angle = -1;
-	struct srcpos angle_pos = {0};
+	bool look = false;
+	vec3 look_at = {0, 0, 0};
+	struct srcpos look_pos = {0, 0, 0};
+	struct xform xf = xform_identity();
+	bool moved = false;
 	while (!parse_accept(p, TOK_RBRACE)) {
 		const struct token *t = parse_peek(p);
 		struct srcpos at = t->pos;
-		struct xform xf;
-		if (parse_transform_item(p, &xf)) {
-			camera_transform(c, &xf);
+		struct xform step;
+		if (parse_transform_item(p, &step)) {
+			xf = xform_compose(&step, &xf);
+			moved = true;
 			continue;
 		}
 		if (t->kind != TOK_KEYWORD)
@@ -380,27 +388,30 @@ static void parse_camera(struct parser *p, struct camera *c)
 		case KW_UP: parse_advance(p); c->up = parse_vector(p); break;
 		case KW_DIRECTION: parse_advance(p); c->direction = parse_vector(p); break;
 		case KW_SKY: parse_advance(p); c->sky = parse_vector(p); break;
-		case KW_ANGLE:
+		case KW_ANGLE: {
 			parse_advance(p);
-			angle_pos = parse_peek(p)->pos;
+			struct srcpos apos = parse_peek(p)->pos;
 			angle = parse_float(p);
 			if (!(angle > 0 && angle < 180))
-				parse_error_at(p, angle_pos, "a perspective camera's angle must be between 0 and 180 degrees, not %g", angle);
-			break;
-		case KW_LOOK_AT: {
-			parse_advance(p);
-			vec3 at_pt = parse_vector(p);
-			if (!camera_look_at(c, at_pt))
-				parse_error_at(p, at, "look_at cannot point along the sky vector or at the camera's own location");
+				parse_error_at(p, apos, "a perspective camera's angle must be between 0 and 180 degrees, not %g", angle);
 			break;
 		}
+		case KW_LOOK_AT:
+			parse_advance(p);
+			look = true;
+			look_pos = at;
+			look_at = parse_vector(p);
+			break;
 		default:
 			parse_expected(p, "a camera item or '}'");
 		}
 	}
-	/* The angle fixes the direction's length from the final right vector. */
 	if (angle > 0)
 		camera_set_angle(c, angle);
+	if (look && !camera_look_at(c, look_at))
+		parse_error_at(p, look_pos, "look_at cannot point along the sky vector or at the camera's own location");
+	if (moved)
+		camera_transform(c, &xf);
 }
 
 /* ---- global settings, background ---- */
