@@ -88,7 +88,7 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, do
 		fprintf(out, "    %-10s %llu\n", stats_ray_name((enum ray_kind)k), (unsigned long long)st->rays[k]);
 	if (st->rays[RAY_SHADOW])
 		fprintf(out, "  shadow rays answered by the last blocker: %llu\n", (unsigned long long)st->shadow_cache_hits);
-	fputs("  simulated  ", out);
+	fputs("  simulated ", out);
 	bool any = false;
 	for (int i = 0; i < FEAT__COUNT; i++)
 		if (features & (1u << i)) {
@@ -96,7 +96,7 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, do
 			any = true;
 		}
 	fputs(any ? "\n" : " (none)\n", out);
-	fputs("  skipped    ", out);
+	fputs("  skipped   ", out);
 	any = false;
 	for (int i = 0; i < FEAT__COUNT; i++)
 		if (!(features & (1u << i))) {
@@ -132,10 +132,25 @@ int main(int argc, char **argv)
 		fprintf(stderr, "lucent: error: no scene file given (see lucent --help)\n");
 		goto done;
 	}
-	if (!opt.format_set && opt.output)
-		img_format_from_path(opt.output, &opt.format);
-	if (!opt.output)
+	if (opt.output) {
+		/* As POV-Ray: a name without an extension gets the format's. */
+		const char *slash = strrchr(opt.output, '/');
+		const char *dot = strrchr(opt.output, '.');
+		if (!dot || (slash && dot < slash)) {
+			char *named = malloc(strlen(opt.output) + 8);
+			if (!named) abort();
+			sprintf(named, "%s.%s", opt.output, img_format_ext(opt.format));
+			free(opt.output);
+			opt.output = named;
+		} else if (!opt.format_set && !img_format_from_path(opt.output, &opt.format)) {
+			fprintf(stderr, "lucent: error: unknown image type '%s' in '%s' "
+			        "(use .png .exr .hdr .tga .ppm .jpg .tif, or +F to choose the format)\n",
+			        dot, opt.output);
+			goto done;
+		}
+	} else {
 		opt.output = default_output(opt.input, opt.format);
+	}
 
 	struct sigaction sa;
 	memset(&sa, 0, sizeof sa);
@@ -186,9 +201,9 @@ int main(int argc, char **argv)
 		goto done;
 	}
 	/* POV-Ray 3.7: a 3.7 scene without assumed_gamma works linearly; an
-	 * older one gets no gamma handling at all. */
+	 * older one, or one that never says #version, gets no gamma handling. */
 	double gamma = scene->gs.assumed_gamma;
-	if (!scene->gs.assumed_gamma_set && scene->version < 3.7)
+	if (!scene->gs.assumed_gamma_set && (!scene->version_set || scene->version < 3.7))
 		gamma = 0;
 	double t1 = now();
 	prep = prepare_scene(scene);
@@ -217,7 +232,7 @@ int main(int argc, char **argv)
 	};
 	if (opt.verbose && !opt.quiet)
 		fprintf(stderr, "lucent: %s: %zu objects (%zu unbounded), %zu lights, %zu BVH nodes; "
-		        "rendering rows %d-%d, columns %d-%d of %dx%d on %d threads\n",
+		        "rendering rows %d-%d, columns %d-%d of %dx%d on up to %d threads\n",
 		        opt.input, scene->nobjects, prep->nunbounded, scene->nlights, bvh_node_count(prep->bvh),
 		        row0 + 1, row1, col0 + 1, col1, opt.width, opt.height, ro.threads);
 	struct stats st;

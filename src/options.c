@@ -183,9 +183,11 @@ static int set_format(struct options *o, const char *arg, FILE *err, const struc
  * they do, so the warning can say it. Longest prefixes first. */
 static const struct { const char *sw; const char *what; } unimplemented[] = {
 	{"AM", "antialiasing method"}, {"AG", "antialiasing gamma"}, {"A", "antialiasing"},
+	{"RTR", "real-time raytracing"}, {"RVP", "real-time viewport"}, {"RS", "radiosity"},
+	{"BM", "bounding method"}, {"BS", "block size"},
 	{"J", "antialias jitter"}, {"R", "antialias depth"}, {"Q", "quality level"},
 	{"KFI", "initial animation frame"}, {"KFF", "final animation frame"}, {"KI", "initial clock"},
-	{"KF", "final clock"}, {"KC", "cyclic animation"}, {"K", "clock"},
+	{"KF", "final clock"}, {"KC", "cyclic animation"},
 	{"MB", "bounding threshold"}, {"MV", "language version"}, {"UR", "remove bounds"},
 	{"UO", "bounding order"}, {"UD", "draw vistas"}, {"UF", "field render"},
 	{"UL", "light buffer"}, {"UV", "vista buffer"}, {"SF", "start frame"}, {"EF", "end frame"},
@@ -194,9 +196,8 @@ static const struct { const char *sw; const char *what; } unimplemented[] = {
 	{"GR", "render stream"}, {"GW", "warning stream"},
 	{"GF", "fatal stream"}, {"GP", "parse stream"}, {"GI", "ini file log"},
 	{"SP", "mosaic preview start"}, {"EP", "mosaic preview end"}, {"TH", "tiling"},
-	{"RTR", "real-time raytracing"}, {"RVP", "real-time viewport"}, {"RS", "radiosity"},
 	{"STP", "status update"}, {"HT", "histogram type"}, {"HN", "histogram name"},
-	{"HS", "histogram size"}, {"BM", "bounding method"}, {"BS", "block size"},
+	{"HS", "histogram size"},
 };
 
 static bool starts_ci(const char *s, const char *prefix)
@@ -260,6 +261,9 @@ static int switch_arg(struct options *o, char sign, const char *s, FILE *err, co
 			return 0;
 		}
 	switch (toupper((unsigned char)s[0])) {
+	case 'K':
+		NUM(1, o->clock = v, 1, "the clock must be a number");
+		return 0;
 	case 'W':
 		NUM(1, o->width = (int)v, v >= 1 && v <= 65536 && v == floor(v), "width must be a whole number from 1 to 65536");
 		return 0;
@@ -382,11 +386,12 @@ static int one_arg(struct options *o, const char *a, FILE *err, const struct ori
 /* An .ini file: Key=Value lines, switches, ';' comments, [sections]. */
 static int read_ini(struct options *o, const char *path, FILE *err, int depth)
 {
-	struct origin at = {path, 0};
+	struct origin at = {NULL, 0};
 	if (depth > 10) {
-		report(err, &at, "error", "ini files include each other too deeply (%s)", path);
+		report(err, &at, "error", "ini files include each other too deeply (at '%s')", path);
 		return 1;
 	}
+	at.file = path;
 	FILE *f = fopen(path, "r");
 	if (!f) {
 		fprintf(err, "lucent: error: cannot read ini file '%s': %s\n", path, strerror(errno));

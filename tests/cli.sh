@@ -39,6 +39,14 @@ check "+O with .exr writes OpenEXR" grep -q "openexr" info.txt
 check "+FN16 writes 16-bit PNG" grep -q "uint16 png" info.txt
 "$LUCENT" -q +W16 +H12 ok.pov +UA +Oalpha.png && iinfo alpha.png > info.txt 2>&1
 check "+UA writes an alpha channel" grep -q "4 channel" info.txt
+oiiotool alpha.png --ch A --printstats > stats.txt 2>&1
+check "+UA makes the background transparent" grep -qE "Stats Min: 0(\.0+)? " stats.txt
+check "+UA keeps objects opaque" grep -qE "Stats Max: 1(\.0+)? " stats.txt
+"$LUCENT" -q +W16 +H12 ok.pov +Onoext && [ -f noext.png ]
+check "+O without an extension gets the format's" [ $? -eq 0 ]
+"$LUCENT" -q +W16 +H12 ok.pov +Oimg.bmp > err.txt 2>&1; rc=$?
+check "an unknown image extension exits 1" [ $rc -eq 1 ]
+check "an unknown image extension is named" contains err.txt "unknown image type '.bmp'"
 "$LUCENT" -q +W16 +H12 ok.pov +FT +Ot.tga && iinfo t.tga > info.txt 2>&1
 check "+FT writes TGA" grep -q "targa" info.txt
 "$LUCENT" -q +W16 +H12 ok.pov +Ot.tif && iinfo t.tif > info.txt 2>&1
@@ -60,6 +68,15 @@ check "-F writes no file" [ ! -f nofile.png ]
 check "+V reports objects, lights and threads" grep -q "1 objects (0 unbounded), 1 lights" out.txt
 check "statistics report rays by kind" grep -qE "^    camera +192$" out.txt
 check "statistics report skipped effects" grep -q "skipped .*reflection" out.txt
+
+# Gamma: a 3.7 scene with assumed_gamma 1 is sRGB-encoded (0.5 -> 188);
+# a scene without #version gets no gamma handling (0.5 -> 128), as POV-Ray.
+printf '#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nbackground { rgb 0.5 }\n' > g37.pov
+printf 'background { rgb 0.5 }\n' > gold.pov
+"$LUCENT" -q +W4 +H4 g37.pov && oiiotool g37.png --printstats > stats.txt 2>&1
+check "assumed_gamma 1.0 encodes 0.5 as sRGB 188" grep -qE "Stats Avg: 188(\.0+)? " stats.txt
+"$LUCENT" -q +W4 +H4 gold.pov && oiiotool gold.png --printstats > stats.txt 2>&1
+check "no #version: 0.5 is written as 128" grep -qE "Stats Avg: 128(\.0+)? " stats.txt
 
 # Standard input
 "$LUCENT" -q +W16 +H12 - +Ostdin.png < ok.pov; rc=$?

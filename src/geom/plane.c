@@ -71,7 +71,6 @@ struct object *plane_new(vec3 normal, double distance, struct srcpos pos)
 	struct plane *p = calloc(1, sizeof *p);
 	if (!p) abort();
 	object_init(&p->base, &plane_ops, pos);
-	p->base.flags |= OBJ_INFINITE;
 	double len = v3_len(normal);
 	p->n = len > 0 ? v3_scale(normal, 1.0 / len) : v3(0, 1, 0);
 	p->d = distance;

@@ -58,13 +58,3 @@ extern "C" int oiio_write(const char *path, const char *format, int width, int h
 		return 1;
 	}
 }
-
-extern "C" int oiio_can_write(const char *format)
-{
-	try {
-		auto out = ImageOutput::create(format);
-		return out ? 1 : 0;
-	} catch (...) {
-		return 0;
-	}
-}

@@ -15,9 +15,6 @@ enum oiio_type { OIIO_UINT8, OIIO_UINT16, OIIO_FLOAT };
 int oiio_write(const char *path, const char *format, int width, int height, int channels,
                enum oiio_type type, const void *pixels, int srgb, char *err, unsigned errsize);
 
-/* Is `format` (a file extension without the dot) one OpenImageIO can write? */
-int oiio_can_write(const char *format);
-
 #ifdef __cplusplus
 }
 #endif

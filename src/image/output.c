@@ -129,7 +129,7 @@ int img_write(const struct framebuffer *fb, const struct img_out *o, char *err, 
 	}
 	char msg[512];
 	int rc = oiio_write(tmp, ext, fb->width, fb->height, channels, type, pixels,
-	                    type != OIIO_FLOAT && o->gamma > 0, msg, sizeof msg);
+	                    type != OIIO_FLOAT, msg, sizeof msg);
 	free(pixels);
 	if (rc != 0) {
 		snprintf(err, errsize, "cannot write '%s': %s", o->path, msg);

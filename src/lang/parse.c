@@ -289,7 +289,7 @@ static void dir_include(struct parser *p, struct srcpos at)
 	const char *name = parse_string(p);
 	char *path = find_include(p, name, at.file);
 	if (!path)
-		parse_error_at(p, at, "cannot find include file \"%s\" (searched the scene's folder, the current folder, +L paths and the stdlib)", name);
+		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
 	uint32_t file = src_find(p->sm, path);
 	if (!file)
 		file = src_load(p->sm, path);
@@ -321,6 +321,7 @@ static void dir_version(struct parser *p)
 	double v = parse_float(p);
 	p->version = v;
 	p->scene->version = v;
+	p->scene->version_set = true;
 	parse_accept(p, TOK_SEMI);
 }
 

@@ -56,7 +56,8 @@ static void render_tile(struct worker *w, int tile)
 			px[0] = (float)c.r;
 			px[1] = (float)c.g;
 			px[2] = (float)c.b;
-			px[3] = any ? 1.0f : (float)(1.0 - j->p->scene->background.t);
+			/* With +UA the background is transparent, as in POV-Ray. */
+			px[3] = any ? 1.0f : 0.0f;
 			w->tr.stats.pixels++;
 			w->tr.stats.samples++;
 		}

@@ -30,7 +30,6 @@ enum object_flag {
 	OBJ_INVERSE = 1 << 3,
 	OBJ_HOLLOW = 1 << 4,
 	OBJ_DOUBLE_ILLUMINATE = 1 << 5,
-	OBJ_INFINITE = 1 << 6, /* unbounded (a plane): kept outside the BVH */
 };
 
 struct object_ops {

@@ -28,6 +28,7 @@ struct scene {
 	struct rgbft background;
 	struct global_settings gs;
 	double version;          /* #version in effect at the end of the parse */
+	bool version_set;        /* the scene said #version at all */
 };
 
 struct scene *scene_new(void);
