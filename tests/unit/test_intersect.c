@@ -183,7 +183,7 @@ static void test_sphere_inside_bounds(void **state)
 	struct aabb b = object_world_bounds(s);
 	assert_vec_near(b.lo, -1, 0, 1, 0);
 	assert_vec_near(b.hi, 3, 4, 5, 0);
-	assert_false(s->flags & OBJ_INFINITE);
+	assert_true(aabb_is_finite(object_world_bounds(s)));
 	s->flags |= OBJ_INVERSE;
 	assert_false(object_inside(s, v3(1, 2, 3)));
 	assert_true(object_inside(s, v3(3.1, 2, 3)));
@@ -247,7 +247,7 @@ static void test_plane(void **state)
 {
 	(void)state;
 	struct object *p = plane_new(v3(0, 1, 0), 0, nopos);
-	assert_true(p->flags & OBJ_INFINITE);
+	assert_false(aabb_is_finite(object_world_bounds(p)));
 	struct hit h = must_hit(p, v3(1, 5, 2), v3(0, -1, 0), 0);
 	assert_near(h.t, 5, 0);
 	assert_vec_near(hit_normal(p, v3(1, 5, 2), v3(0, -1, 0), &h), 0, 1, 0, 0);
