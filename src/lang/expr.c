@@ -138,7 +138,7 @@ static struct value parse_binary(struct parser *p, int min_prec, bool in_vector)
 {
 	struct value a = parse_unary(p);
 	for (;;) {
-		const struct token *t = parse_peek(p);
+		const struct token *t = parse_peek_cont(p);
 		enum op op = binop((enum tok_kind)t->kind, in_vector);
 		if (op == OP_NONE || ops[op].prec < min_prec)
 			return a;
@@ -155,7 +155,7 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 	if (++p->expr_depth > MAX_EXPR_DEPTH)
 		parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
 	struct value c = parse_binary(p, 1, in_vector);
-	if (parse_is(p, TOK_QUESTION)) {
+	if (parse_peek_cont(p)->kind == TOK_QUESTION) {
 		need_float(p, &c, "the condition of '?:'");
 		parse_advance(p);
 		struct value a = parse_cond(p, in_vector);
@@ -486,7 +486,7 @@ static struct value parse_primary(struct parser *p)
 static struct value parse_postfix(struct parser *p)
 {
 	struct value v = parse_primary(p);
-	while (parse_is(p, TOK_DOT)) {
+	while (parse_peek_cont(p)->kind == TOK_DOT) {
 		parse_advance(p);
 		const struct token *t = parse_peek(p);
 		if (t->kind != TOK_KEYWORD)

@@ -1,15 +1,15 @@
-/* parse.c: the parser's core: the error boundary, the token stream with
- * directives run in it, symbol scopes, and the directives themselves. */
+/* parse.c: the parser's core: the error boundary, ownership of what a
+ * failed parse leaves behind, the token stream (frames of files and macro
+ * bodies, with directives and macro calls run in it), and symbol scopes.
+ * The directives themselves are in directive.c. */
 #include "lang/parser.h"
 
 #include "lang/intern.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* ---- errors ---- */
 
@@ -46,15 +46,35 @@ void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...)
 	va_end(ap);
 }
 
-/* Prints the chain of includes that led to the current position. */
+static bool same_entry(const struct frame *a, const struct frame *b)
+{
+	return a->kind == b->kind && a->macro == b->macro && a->from.file == b->from.file &&
+	       a->from.line == b->from.line && a->from.col == b->from.col;
+}
+
+/* Prints the chain of includes and macro calls that led to the current
+ * position, innermost first. A run of identical entries (recursion) is
+ * printed once with its count. */
 static void print_context(void *arg, FILE *out)
 {
 	struct parser *p = arg;
 	for (int i = p->nframes - 1; i > 0; i--) {
 		const struct frame *f = &p->frames[i];
+		int repeats = 0;
+		while (i - 1 > 0 && same_entry(f, &p->frames[i - 1])) {
+			repeats++;
+			i--;
+		}
 		const struct srcfile *sf = src_file(p->sm, f->from.file);
-		if (sf)
-			fprintf(out, "  included from %s:%u:%u\n", sf->path, f->from.line, f->from.col);
+		if (!sf)
+			continue;
+		if (f->kind == FRAME_MACRO)
+			fprintf(out, "  in macro %s called from %s:%u:%u", f->macro, sf->path, f->from.line, f->from.col);
+		else
+			fprintf(out, "  included from %s:%u:%u", sf->path, f->from.line, f->from.col);
+		if (repeats)
+			fprintf(out, " (and %d more times from there)", repeats);
+		fputc('\n', out);
 	}
 }
 
@@ -71,57 +91,157 @@ int parse_own(struct parser *p, void *ptr, void (*fn)(void *))
 
 void parse_release(struct parser *p, int slot)
 {
-	/* Slots are released in LIFO order; releasing an inner one first is
-	 * still correct, it just leaves a hole. */
+	/* Slots are normally released last-in first-out; releasing an inner
+	 * one first just leaves a hole until the ones above it go. */
 	p->owned[slot].ptr = NULL;
 	while (p->nowned > 0 && p->owned[p->nowned - 1].ptr == NULL)
 		p->nowned--;
 }
 
-/* ---- token stream ---- */
-
-static void directive(struct parser *p, struct srcpos at);
-
-/* The next token from the innermost frame, leaving finished files. */
-static struct token raw_next(struct parser *p)
+void parse_take(struct parser *p, struct value *v)
 {
-	for (;;) {
-		struct frame *f = &p->frames[p->nframes - 1];
-		const struct token *t = &f->toks[f->pos];
-		if (t->kind != TOK_EOF) {
-			f->pos++;
-			return *t;
-		}
-		if (p->nframes == 1)
-			return *t;
-		sym_free(f->locals);
-		p->nframes--;
+	if (v->owner > 0) {
+		struct value *held = p->owned[v->owner - 1].ptr;
+		parse_release(p, v->owner - 1);
+		free(held);
+		v->owner = 0;
 	}
 }
 
-/* Make the next token current, running any directives before it. */
+void parse_drop(struct parser *p, struct value *v)
+{
+	parse_take(p, v);
+	val_clear(v);
+}
+
+/* ---- frames and the token stream ---- */
+
+static void check_frame_conds(struct parser *p, int frame)
+{
+	if (p->nconds > 0 && p->conds[p->nconds - 1].frame == frame) {
+		const struct cond *c = &p->conds[p->nconds - 1];
+		static const char *const names[] = {"#if", "#switch", "#while", "#for"};
+		parse_error_at(p, c->pos, "%s is never closed by #end%s", names[c->kind],
+		               p->frames[frame].kind == FRAME_MACRO ? " inside its macro" : " in its file");
+	}
+}
+
+static void pop_frame(struct parser *p)
+{
+	struct frame *f = &p->frames[p->nframes - 1];
+	check_frame_conds(p, p->nframes - 1);
+	sym_free(f->locals);
+	f->locals = NULL;
+	p->nframes--;
+}
+
+static struct frame *push_frame(struct parser *p, struct srcpos from)
+{
+	if (p->nframes == MAX_FRAMES)
+		parse_error_at(p, from, "includes and macro calls nested too deeply (more than %d levels)", MAX_FRAMES);
+	struct frame *f = &p->frames[p->nframes++];
+	memset(f, 0, sizeof *f);
+	f->from = from;
+	f->nconds = p->nconds;
+	return f;
+}
+
+void parse_push_file(struct parser *p, uint32_t file, struct srcpos from)
+{
+	int includes = 0;
+	for (int i = 0; i < p->nframes; i++)
+		includes += p->frames[i].kind == FRAME_FILE;
+	if (includes > MAX_INCLUDE_DEPTH)
+		parse_error_at(p, from, "includes nested too deeply (more than %d levels)", MAX_INCLUDE_DEPTH);
+	struct frame *f = push_frame(p, from);
+	f->kind = FRAME_FILE;
+	f->file = file;
+	f->locals = p->nframes > 1 ? sym_new() : NULL;
+	/* Lex with the frame in place, so a lexical error shows the include
+	 * chain that led to this file. */
+	if (!lex_file(p->sm, file, p->d))
+		longjmp(*p->boundary, 1);
+	const struct srcfile *sf = src_file(p->sm, file);
+	f->toks = sf->toks;
+	f->pos = 0;
+	f->end = sf->ntoks - 1; /* the TOK_EOF */
+}
+
+struct token parse_raw(struct parser *p)
+{
+	for (;;) {
+		struct frame *f = &p->frames[p->nframes - 1];
+		if (f->pos < f->end)
+			return f->toks[f->pos++];
+		if (p->nframes == 1) {
+			check_frame_conds(p, 0);
+			return f->toks[f->end]; /* TOK_EOF of the main file */
+		}
+		pop_frame(p);
+	}
+}
+
+/* Make the next token current, running directives and macro calls before
+ * it. */
 static void fetch(struct parser *p)
 {
 	while (!p->have_cur) {
-		struct token t = raw_next(p);
+		struct token t = parse_raw(p);
 		if (t.kind == TOK_HASH) {
-			directive(p, t.pos);
-		} else {
-			p->cur = t;
-			p->have_cur = true;
+			struct frame *f = &p->frames[p->nframes - 1];
+			parse_directive(p, f->pos - 1);
+			continue;
 		}
+		if (t.kind == TOK_IDENT) {
+			struct value *v = parse_lookup(p, t.str);
+			if (v && v->kind == VAL_MACRO) {
+				parse_call_macro(p, &t, v->mac);
+				continue;
+			}
+		}
+		p->cur = t;
+		p->have_cur = true;
 	}
+}
+
+/* A '#' held as the lookahead is the sentinel of parse_peek_cont: the
+ * directive is still in its frame, and runs when a token is really needed. */
+static void drop_sentinel(struct parser *p)
+{
+	if (p->have_cur && p->cur.kind == TOK_HASH)
+		p->have_cur = false;
 }
 
 const struct token *parse_peek(struct parser *p)
 {
+	drop_sentinel(p);
 	if (!p->have_cur)
 		fetch(p);
 	return &p->cur;
 }
 
+const struct token *parse_peek_cont(struct parser *p)
+{
+	if (p->have_cur || !p->defer) {
+		if (!p->have_cur)
+			fetch(p);
+		return &p->cur;
+	}
+	struct token t = parse_raw(p);
+	if (t.kind != TOK_EOF)
+		p->frames[p->nframes - 1].pos--; /* put it back */
+	if (t.kind == TOK_HASH) {
+		p->cur = t;
+		p->have_cur = true;
+		return &p->cur;
+	}
+	fetch(p);
+	return &p->cur;
+}
+
 void parse_advance(struct parser *p)
 {
+	drop_sentinel(p);
 	if (!p->have_cur)
 		fetch(p);
 	p->prev = p->cur;
@@ -163,189 +283,50 @@ void parse_expect(struct parser *p, enum tok_kind k)
 
 /* ---- symbols ---- */
 
-struct value *parse_lookup(struct parser *p, const char *name)
+/* The innermost binding of name, and the table holding it. */
+static struct value *find_binding(struct parser *p, const char *name, struct symtab **where)
 {
 	for (int i = p->nframes - 1; i >= 0; i--)
 		if (p->frames[i].locals) {
 			struct value *v = sym_get(p->frames[i].locals, name);
-			if (v)
+			if (v) {
+				*where = p->frames[i].locals;
 				return v;
+			}
 		}
+	*where = p->globals;
 	return sym_get(p->globals, name);
 }
 
-/* ---- files ---- */
-
-static bool readable(const char *path) { return access(path, R_OK) == 0; }
-
-/* Find an #include file: the including file's folder, the current folder,
- * each +L path, then lucent's stdlib. Returns a malloc'd path or NULL. */
-static char *find_include(struct parser *p, const char *name, uint32_t from_file)
+struct value *parse_lookup(struct parser *p, const char *name)
 {
-	char buf[PATH_MAX * 2];
-	if (name[0] == '/')
-		return readable(name) ? strdup(name) : NULL;
-	const struct srcfile *sf = src_file(p->sm, from_file);
-	if (sf) {
-		const char *slash = strrchr(sf->path, '/');
-		if (slash) {
-			snprintf(buf, sizeof buf, "%.*s/%s", (int)(slash - sf->path), sf->path, name);
-			if (readable(buf))
-				return strdup(buf);
-		}
-	}
-	if (readable(name))
-		return strdup(name);
-	for (size_t i = 0; i < p->o->nlib_paths; i++) {
-		snprintf(buf, sizeof buf, "%s/%s", p->o->lib_paths[i], name);
-		if (readable(buf))
-			return strdup(buf);
-	}
-	if (p->o->stdlib_dir) {
-		snprintf(buf, sizeof buf, "%s/%s", p->o->stdlib_dir, name);
-		if (readable(buf))
-			return strdup(buf);
-	}
-	return NULL;
+	struct symtab *t;
+	struct value *v = find_binding(p, name, &t);
+	/* A by-reference parameter names its caller's binding; chains of them
+	 * (a parameter passed on) are short, and end. */
+	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++)
+		v = sym_get(v->alias.table, v->alias.name);
+	return v;
 }
 
-/* Push the tokens of `file` as a new frame. */
-static void push_file(struct parser *p, uint32_t file, struct srcpos from)
+struct symtab *parse_declare_table(struct parser *p, const char **name)
 {
-	if (p->nframes == MAX_FRAMES)
-		parse_error_at(p, from, "includes nested too deeply (more than %d levels)", MAX_FRAMES);
-	if (!lex_file(p->sm, file, p->d))
-		longjmp(*p->boundary, 1);
-	const struct srcfile *sf = src_file(p->sm, file);
-	struct frame *f = &p->frames[p->nframes++];
-	f->kind = FRAME_FILE;
-	f->file = file;
-	f->toks = sf->toks;
-	f->pos = 0;
-	f->end = sf->ntoks;
-	f->from = from;
-	f->locals = p->nframes > 1 ? sym_new() : NULL;
+	struct symtab *t;
+	struct value *v = find_binding(p, *name, &t);
+	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++) {
+		t = v->alias.table;
+		*name = v->alias.name;
+		v = sym_get(t, *name);
+	}
+	return v ? t : p->globals;
 }
 
-/* ---- directives ---- */
-
-/* #declare IDENT = value [;]  /  #local IDENT = value [;] */
-static void dir_declare(struct parser *p, bool local)
+struct symtab *parse_local_table(struct parser *p)
 {
-	const struct token *t = parse_peek(p);
-	if (t->kind == TOK_KEYWORD)
-		parse_error(p, "'%s' is a reserved word and cannot be declared", kw_names[t->kw]);
-	if (t->kind != TOK_IDENT)
-		parse_expected(p, "an identifier to declare");
-	const char *name = t->str;
-	struct srcpos npos = t->pos;
-	parse_advance(p);
-	parse_expect(p, TOK_EQ);
-	struct value v;
-	if (!parse_item_value(p, &v)) {
-		if (!parse_starts_expression(p))
-			parse_expected(p, "a value after '='");
-		v = parse_expression(p);
-	}
-	v.pos = npos;
-	/* Commit before looking at the next token, so that a directive right
-	 * after this one already sees the new value. */
-	struct symtab *tab = p->globals;
-	if (local) {
-		for (int i = p->nframes - 1; i >= 0; i--)
-			if (p->frames[i].locals) {
-				tab = p->frames[i].locals;
-				break;
-			}
-	}
-	sym_set(tab, name, v);
-	parse_accept(p, TOK_SEMI);
-}
-
-/* #undef IDENT */
-static void dir_undef(struct parser *p)
-{
-	const struct token *t = parse_peek(p);
-	if (t->kind != TOK_IDENT)
-		parse_expected(p, "an identifier after #undef");
-	const char *name = t->str;
-	struct srcpos pos = t->pos;
-	parse_advance(p);
-	bool found = false;
-	for (int i = p->nframes - 1; i >= 0 && !found; i--)
+	for (int i = p->nframes - 1; i >= 0; i--)
 		if (p->frames[i].locals)
-			found = sym_remove(p->frames[i].locals, name);
-	if (!found)
-		found = sym_remove(p->globals, name);
-	if (!found)
-		parse_warning_at(p, pos, "#undef of '%s', which is not declared", name);
-}
-
-/* #include "file" */
-static void dir_include(struct parser *p, struct srcpos at)
-{
-	/* parse_string reads nothing past the string, so the file is entered
-	 * before any later token of the including file. */
-	const char *name = parse_string(p);
-	char *path = find_include(p, name, at.file);
-	if (!path)
-		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
-	uint32_t file = src_find(p->sm, path);
-	if (!file)
-		file = src_load(p->sm, path);
-	int err = errno;
-	free(path);
-	if (!file)
-		parse_error_at(p, at, "cannot read include file \"%s\": %s", name, strerror(err));
-	push_file(p, file, at);
-}
-
-/* #debug / #warning / #error "text" */
-static void dir_message(struct parser *p, enum kw which, struct srcpos at)
-{
-	const char *text = parse_string(p);
-	if (which == KW_DEBUG) {
-		FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
-		fputs(text, out);
-		fflush(out);
-	} else if (which == KW_WARNING) {
-		parse_warning_at(p, at, "%s", text);
-	} else {
-		parse_error_at(p, at, "#error: %s", text);
-	}
-}
-
-/* #version FLOAT [;] */
-static void dir_version(struct parser *p)
-{
-	double v = parse_float(p);
-	p->version = v;
-	p->scene->version = v;
-	p->scene->version_set = true;
-	parse_accept(p, TOK_SEMI);
-}
-
-/* Run the directive whose '#' was at `at`. Its tokens are all consumed on
- * return (the lookahead may already hold the token after it). */
-static void directive(struct parser *p, struct srcpos at)
-{
-	struct token kwt = raw_next(p);
-	if (kwt.kind != TOK_KEYWORD) {
-		char buf[128];
-		parse_error_at(p, kwt.pos, "expected a directive name after '#', found %s", lex_describe(&kwt, buf, sizeof buf));
-	}
-	switch (kwt.kw) {
-	case KW_DECLARE: dir_declare(p, false); break;
-	case KW_LOCAL: dir_declare(p, true); break;
-	case KW_UNDEF: dir_undef(p); break;
-	case KW_INCLUDE: dir_include(p, at); break;
-	case KW_DEBUG:
-	case KW_WARNING:
-	case KW_ERROR: dir_message(p, (enum kw)kwt.kw, at); break;
-	case KW_VERSION: dir_version(p); break;
-	default:
-		parse_error_at(p, kwt.pos, "unknown directive '#%s'", kw_names[kwt.kw]);
-	}
+			return p->frames[i].locals;
+	return p->globals;
 }
 
 /* ---- entry ---- */
@@ -379,7 +360,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 			            o->input, strerror(errno));
 			longjmp(jb, 1);
 		}
-		push_file(p, file, (struct srcpos){0, 0, 0});
+		parse_push_file(p, file, (struct srcpos){0, 0, 0});
 		while (parse_peek(p)->kind != TOK_EOF)
 			parse_statement(p);
 	} else {

@@ -11,18 +11,35 @@
 
 #include <setjmp.h>
 
-enum { MAX_FRAMES = 200, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256 };
+/* Limits. Nesting of includes and macro calls shares MAX_FRAMES. */
+enum { MAX_FRAMES = 1000, MAX_INCLUDE_DEPTH = 100, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256, MAX_CONDS = 4096 };
 
-enum frame_kind { FRAME_FILE };
+enum frame_kind { FRAME_FILE, FRAME_MACRO };
 
-/* A source of tokens being read: a file (or, later, a macro body). */
+/* A source of tokens being read: a file or a macro body. */
 struct frame {
 	enum frame_kind kind;
 	uint32_t file;
 	const struct token *toks;
-	size_t pos, end;
-	struct srcpos from;   /* where it was entered (the #include) */
-	struct symtab *locals; /* #local scope of this file */
+	size_t pos, end;       /* next token; one past the last (a macro's #end) */
+	struct srcpos from;    /* where it was entered (the #include or the call) */
+	const char *macro;     /* the macro's name, for FRAME_MACRO */
+	struct symtab *locals; /* #local scope; NULL for the main file */
+	int nconds;            /* open #if/#while/... when the frame was entered */
+};
+
+enum cond_kind { COND_IF, COND_SWITCH, COND_WHILE, COND_FOR };
+
+/* An open #if, #switch, #while or #for, waiting for its #end. */
+struct cond {
+	enum cond_kind kind;
+	int frame;            /* the frame it belongs to */
+	struct srcpos pos;    /* of the directive, for "never closed" errors */
+	size_t loop;          /* WHILE: index of its '#'; FOR: the body's first token */
+	const char *var;      /* FOR: the loop variable */
+	double end, step;     /* FOR */
+	double value;         /* SWITCH: the value switched on */
+	bool matched;         /* SWITCH: a #case has matched (later ones fall through) */
 };
 
 /* Something to free if the parse fails before it is handed on. */
@@ -41,6 +58,10 @@ struct parser {
 
 	struct frame frames[MAX_FRAMES];
 	int nframes;
+	struct cond conds[MAX_CONDS];
+	int nconds;
+	bool defer;                  /* reading a directive's operands (see
+	                              * parse_peek_cont) */
 	struct token cur;            /* the lookahead token, valid if have_cur */
 	bool have_cur;               /* tokens are fetched lazily, so a directive
 	                              * after a statement runs only once the
@@ -67,6 +88,11 @@ void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...)
 /* The token stream (directives already run). parse_peek returns the
  * current token, fetching it if needed; parse_advance consumes it. */
 const struct token *parse_peek(struct parser *p);
+/* The lookahead where a value could continue (an operator, '.', ';'...).
+ * While a directive's operands are read, a directive there does not run
+ * yet: it shows as TOK_HASH, so `#declare A = 1; #declare B = A;` and
+ * `#if (A) #declare ...` act in order. */
+const struct token *parse_peek_cont(struct parser *p);
 void parse_advance(struct parser *p);
 bool parse_is(struct parser *p, enum tok_kind k);
 bool parse_is_kw(struct parser *p, enum kw k);
@@ -78,8 +104,27 @@ void parse_expect(struct parser *p, enum tok_kind k);
 int parse_own(struct parser *p, void *ptr, void (*fn)(void *));
 void parse_release(struct parser *p, int slot);
 
-/* Symbols: the innermost binding of name, or NULL. */
+/* Symbols: the innermost binding of name (aliases followed), or NULL. */
 struct value *parse_lookup(struct parser *p, const char *name);
+/* The table where #declare NAME would store: the one holding the innermost
+ * existing binding (through a by-reference alias), else the globals. */
+struct symtab *parse_declare_table(struct parser *p, const char **name);
+/* The innermost #local table (the globals in the main file). */
+struct symtab *parse_local_table(struct parser *p);
+
+/* Raw token access for directives: the next token of the innermost frame,
+ * without running directives or macros. Only when no lookahead is held. */
+struct token parse_raw(struct parser *p);
+/* Enter a macro body (called by the token stream on a macro's name). */
+void parse_call_macro(struct parser *p, const struct token *name, struct macro *m);
+/* Enter a file's tokens; `from` is the #include's position. */
+void parse_push_file(struct parser *p, uint32_t file, struct srcpos from);
+/* Run a directive whose '#' was at index `at` of the top frame. */
+void parse_directive(struct parser *p, size_t at);
+/* Values of scene items found while evaluating an expression are owned by
+ * the parse until a consumer takes them. */
+void parse_take(struct parser *p, struct value *v);
+void parse_drop(struct parser *p, struct value *v);
 
 /* Expressions (expr.c). */
 struct value parse_expression(struct parser *p);

@@ -22,6 +22,8 @@ const char *val_kind_name(enum val_kind k)
 	case VAL_CAMERA: return "camera";
 	case VAL_LIGHT: return "light_source";
 	case VAL_TRANSFORM: return "transform";
+	case VAL_MACRO: return "macro";
+	case VAL_ALIAS: return "reference";
 	}
 	return "?";
 }
@@ -36,6 +38,12 @@ void val_clear(struct value *v)
 	case VAL_CAMERA: free(v->cam); break;
 	case VAL_LIGHT: free(v->light); break;
 	case VAL_TRANSFORM: free(v->xf); break;
+	case VAL_MACRO:
+		if (--v->mac->refs == 0) {
+			free(v->mac->params);
+			free(v->mac);
+		}
+		break;
 	default: break;
 	}
 	v->kind = VAL_NONE;
@@ -59,7 +67,9 @@ struct value val_copy(const struct value *src)
 	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
 	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;
 	case VAL_TRANSFORM: v.xf = dup_bytes(src->xf, sizeof *src->xf); break;
+	case VAL_MACRO: v.mac->refs++; break;
 	default: break;
 	}
+	v.owner = 0;
 	return v;
 }

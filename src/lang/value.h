@@ -22,14 +22,35 @@ enum val_kind {
 	VAL_CAMERA,
 	VAL_LIGHT,
 	VAL_TRANSFORM,
+	VAL_MACRO,    /* a #macro definition (shared, reference-counted) */
+	VAL_ALIAS,    /* a by-reference macro parameter: names another binding */
 };
 
 struct light;
 struct camera;
+struct symtab;
 
+/* A macro: its parameters and where its body lies in a file's tokens. */
+struct macro {
+	int refs;
+	const char *name;        /* interned */
+	struct srcpos pos;       /* of the #macro */
+	uint32_t file;           /* the file whose tokens hold the body */
+	size_t body, end;        /* token indices: first body token, the '#' of #end */
+	int nparams;
+	const char **params;     /* interned names */
+};
+
+/* Where a by-reference parameter's value really lives. */
+struct alias {
+	struct symtab *table;
+	const char *name;
+};
 struct value {
 	enum val_kind kind;
 	int n;                 /* components for FLOAT (1), VECTOR, COLOR (5) */
+	int owner;             /* > 0: held in the parser's ownership slot owner-1
+	                        * while an expression is being evaluated */
 	struct srcpos pos;
 	union {
 		double v[5];
@@ -41,6 +62,8 @@ struct value {
 		struct camera *cam;    /* owned */
 		struct light *light;   /* owned */
 		struct xform *xf;      /* owned */
+		struct macro *mac;     /* one reference */
+		struct alias alias;
 	};
 };
 

@@ -1,0 +1,671 @@
+/* directive.c: the directives (#declare, #if, #while, #macro, ...), run by
+ * the token stream whenever it meets a '#'. Conditionals and loops are
+ * driven by a stack of open blocks (struct cond); a false branch is skipped
+ * by scanning raw tokens, and a loop jumps back by token index. Nothing is
+ * lexed again. */
+#include "lang/parser.h"
+
+#include "lang/intern.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static struct frame *top(struct parser *p) { return &p->frames[p->nframes - 1]; }
+
+static _Noreturn void raw_expected(struct parser *p, const struct token *t, const char *what)
+{
+	char buf[128];
+	parse_error_at(p, t->pos, "expected %s, found %s", what, lex_describe(t, buf, sizeof buf));
+}
+
+/* The next raw token, which must be of kind k. */
+static struct token raw_expect(struct parser *p, enum tok_kind k, const char *what)
+{
+	struct token t = parse_raw(p);
+	if (t.kind != k)
+		raw_expected(p, &t, what);
+	return t;
+}
+
+/* A condition is true when it is not zero; POV-Ray counts values within
+ * 1e-10 of zero as zero, to forgive round-off. */
+static bool truthy(double x) { return fabs(x) > 1e-10; }
+
+/* '(' FLOAT ')', reading nothing after the ')'. */
+static double paren_float(struct parser *p)
+{
+	parse_expect(p, TOK_LPAREN);
+	double v = parse_float(p);
+	parse_expect(p, TOK_RPAREN);
+	return v;
+}
+
+/* ---- skipping ---- */
+
+enum { STOP_END = 1, STOP_ELSE = 2, STOP_CASE = 4 };
+
+/* Skip raw tokens of the top frame up to a directive at nesting depth 0
+ * whose kind is in `stop` (#end always stops, at depth 0 after `depth`
+ * more #ends). Returns its keyword, leaving the frame just past it. An
+ * unclosed block is reported at `open`. */
+static enum kw skip_block(struct parser *p, int stop, int depth, struct srcpos open, const char *what)
+{
+	struct frame *f = top(p);
+	while (f->pos + 1 < f->end) {
+		const struct token *t = &f->toks[f->pos++];
+		if (t->kind != TOK_HASH)
+			continue;
+		const struct token *k = &f->toks[f->pos];
+		if (k->kind != TOK_KEYWORD)
+			continue;
+		switch (k->kw) {
+		case KW_IF: case KW_IFDEF: case KW_IFNDEF: case KW_SWITCH: case KW_WHILE: case KW_FOR: case KW_MACRO:
+			depth++;
+			break;
+		case KW_END:
+			if (depth == 0) {
+				f->pos++;
+				return KW_END;
+			}
+			depth--;
+			break;
+		case KW_ELSE: case KW_ELSEIF:
+			if (depth == 0 && (stop & STOP_ELSE)) {
+				f->pos++;
+				return (enum kw)k->kw;
+			}
+			break;
+		case KW_CASE: case KW_RANGE:
+			if (depth == 0 && (stop & STOP_CASE)) {
+				f->pos++;
+				return (enum kw)k->kw;
+			}
+			break;
+		default:
+			break;
+		}
+	}
+	parse_error_at(p, open, "%s is never closed by #end%s", what,
+	               f->kind == FRAME_MACRO ? " inside its macro" : " in its file");
+}
+
+/* ---- the block stack ---- */
+
+static struct cond *push_cond(struct parser *p, enum cond_kind k, struct srcpos pos)
+{
+	if (p->nconds == MAX_CONDS)
+		parse_error_at(p, pos, "#if, #switch, #while and #for nested too deeply (more than %d)", MAX_CONDS);
+	struct cond *c = &p->conds[p->nconds++];
+	memset(c, 0, sizeof *c);
+	c->kind = k;
+	c->frame = p->nframes - 1;
+	c->pos = pos;
+	return c;
+}
+
+/* The innermost open block of this frame, or NULL. */
+static struct cond *top_cond(struct parser *p)
+{
+	if (p->nconds == 0 || p->conds[p->nconds - 1].frame != p->nframes - 1)
+		return NULL;
+	return &p->conds[p->nconds - 1];
+}
+
+/* ---- #if, #ifdef, #ifndef, #else, #elseif ---- */
+
+/* After a false condition: find the branch to run, or the #end. */
+static void skip_false_branch(struct parser *p, struct srcpos open)
+{
+	for (;;) {
+		enum kw k = skip_block(p, STOP_ELSE, 0, open, "#if");
+		if (k == KW_END) {
+			p->nconds--;
+			return;
+		}
+		if (k == KW_ELSE)
+			return;
+		if (truthy(paren_float(p))) /* #elseif */
+			return;
+	}
+}
+
+static void dir_if(struct parser *p, struct srcpos at)
+{
+	bool c = truthy(paren_float(p));
+	push_cond(p, COND_IF, at);
+	if (!c)
+		skip_false_branch(p, at);
+}
+
+/* #ifdef ( IDENT ) / #ifndef ( IDENT ) */
+static void dir_ifdef(struct parser *p, struct srcpos at, bool want)
+{
+	raw_expect(p, TOK_LPAREN, "'(' after #ifdef");
+	struct token t = parse_raw(p);
+	bool defined;
+	if (t.kind == TOK_IDENT)
+		defined = parse_lookup(p, t.str) != NULL;
+	else if (t.kind == TOK_KEYWORD)
+		defined = false; /* a reserved word is never a declared identifier */
+	else
+		raw_expected(p, &t, "an identifier");
+	raw_expect(p, TOK_RPAREN, "')'");
+	push_cond(p, COND_IF, at);
+	if (defined != want)
+		skip_false_branch(p, at);
+}
+
+/* #else / #elseif met while running a branch: the rest is skipped. In a
+ * #switch, #else is one more case, reached by falling through. */
+static void dir_else(struct parser *p, struct srcpos at, enum kw k)
+{
+	struct cond *c = top_cond(p);
+	if (c && c->kind == COND_SWITCH && k == KW_ELSE) {
+		c->matched = true;
+		return;
+	}
+	if (!c || c->kind != COND_IF)
+		parse_error_at(p, at, "#%s without an open #if", kw_names[k]);
+	skip_block(p, STOP_END, 0, c->pos, "#if");
+	p->nconds--;
+}
+
+/* ---- #switch, #case, #range, #break ---- */
+
+static bool case_matches(struct parser *p, enum kw k, double v)
+{
+	if (k == KW_CASE)
+		return v == paren_float(p);
+	parse_expect(p, TOK_LPAREN);
+	double lo = parse_float(p);
+	parse_expect(p, TOK_COMMA);
+	double hi = parse_float(p);
+	parse_expect(p, TOK_RPAREN);
+	return v >= lo && v <= hi;
+}
+
+/* Skip to the next clause of the switch c that applies, or its #end. */
+static void skip_to_case(struct parser *p, struct cond *c)
+{
+	for (;;) {
+		enum kw k = skip_block(p, STOP_CASE | STOP_ELSE, 0, c->pos, "#switch");
+		if (k == KW_END) {
+			p->nconds--;
+			return;
+		}
+		if (k == KW_ELSE || case_matches(p, k, c->value)) {
+			c->matched = true;
+			return;
+		}
+	}
+}
+
+static void dir_switch(struct parser *p, struct srcpos at)
+{
+	double v = paren_float(p);
+	struct cond *c = push_cond(p, COND_SWITCH, at);
+	c->value = v;
+	/* Tokens before the first #case are parsed, as POV-Ray does. */
+}
+
+static void dir_case(struct parser *p, struct srcpos at, enum kw k)
+{
+	struct cond *c = top_cond(p);
+	if (!c || c->kind != COND_SWITCH)
+		parse_error_at(p, at, "#%s outside a #switch", kw_names[k]);
+	if (c->matched) {
+		/* Falling through from the clause above: skip the operands. */
+		(void)case_matches(p, k, c->value);
+		return;
+	}
+	if (case_matches(p, k, c->value))
+		c->matched = true;
+	else
+		skip_to_case(p, c);
+}
+
+/* #break leaves the innermost #switch, #while or #for of this frame. */
+static void dir_break(struct parser *p, struct srcpos at)
+{
+	int i = p->nconds - 1;
+	while (i >= 0 && p->conds[i].frame == p->nframes - 1 && p->conds[i].kind == COND_IF)
+		i--;
+	if (i < 0 || p->conds[i].frame != p->nframes - 1)
+		parse_error_at(p, at, "#break outside a #switch, #while or #for");
+	int inner = p->nconds - 1 - i;
+	struct srcpos open = p->conds[i].pos;
+	p->nconds = i;
+	skip_block(p, STOP_END, inner, open, "the block of this #break");
+}
+
+/* ---- #while, #for, #end ---- */
+
+static void dir_while(struct parser *p, struct srcpos at, size_t hash)
+{
+	if (truthy(paren_float(p))) {
+		struct cond *c = push_cond(p, COND_WHILE, at);
+		c->loop = hash;
+	} else {
+		skip_block(p, STOP_END, 0, at, "#while");
+	}
+}
+
+/* Assign a float the way #declare does. */
+static void declare_float(struct parser *p, const char *name, double x)
+{
+	struct value v = {.kind = VAL_FLOAT, .n = 1};
+	v.v[0] = x;
+	struct symtab *t = parse_declare_table(p, &name);
+	sym_set(t, name, v);
+}
+
+static bool for_continues(double i, double end, double step)
+{
+	return step > 0 ? i <= end : i >= end;
+}
+
+/* #for ( IDENT , START , END [, STEP] ) */
+static void dir_for(struct parser *p, struct srcpos at)
+{
+	raw_expect(p, TOK_LPAREN, "'(' after #for");
+	struct token id = parse_raw(p);
+	if (id.kind != TOK_IDENT)
+		raw_expected(p, &id, "the loop variable's name");
+	raw_expect(p, TOK_COMMA, "','");
+	double start = parse_float(p);
+	parse_expect(p, TOK_COMMA);
+	double end = parse_float(p);
+	double step = 1;
+	if (parse_accept(p, TOK_COMMA)) {
+		struct srcpos spos = parse_peek(p)->pos;
+		step = parse_float(p);
+		if (step == 0)
+			parse_error_at(p, spos, "a #for step of 0 would never end");
+	}
+	parse_expect(p, TOK_RPAREN);
+	declare_float(p, id.str, start);
+	if (!for_continues(start, end, step)) {
+		skip_block(p, STOP_END, 0, at, "#for");
+		return;
+	}
+	struct cond *c = push_cond(p, COND_FOR, at);
+	c->var = id.str;
+	c->end = end;
+	c->step = step;
+	c->loop = top(p)->pos;
+}
+
+static void dir_end(struct parser *p, struct srcpos at)
+{
+	struct cond *c = top_cond(p);
+	if (!c)
+		parse_error_at(p, at, "#end without an open #if, #ifdef, #ifndef, #switch, #while, #for or #macro");
+	switch (c->kind) {
+	case COND_IF:
+	case COND_SWITCH:
+		p->nconds--;
+		break;
+	case COND_WHILE:
+		/* Back to the '#' of the #while, which runs again. */
+		top(p)->pos = c->loop;
+		p->nconds--;
+		break;
+	case COND_FOR: {
+		struct value *v = parse_lookup(p, c->var);
+		if (!v || v->kind != VAL_FLOAT)
+			parse_error_at(p, at, "the #for loop variable '%s' is no longer a float", c->var);
+		double next = v->v[0] + c->step;
+		v->v[0] = next;
+		if (for_continues(next, c->end, c->step))
+			top(p)->pos = c->loop;
+		else
+			p->nconds--;
+		break;
+	}
+	}
+}
+
+/* ---- #macro and macro calls ---- */
+
+static void free_macro_value(void *v)
+{
+	val_clear(v);
+	free(v);
+}
+
+/* #macro IDENT ( [IDENT {, IDENT}] ) body #end */
+static void dir_macro(struct parser *p, struct srcpos at)
+{
+	struct token name = parse_raw(p);
+	if (name.kind != TOK_IDENT)
+		raw_expected(p, &name, name.kind == TOK_KEYWORD ? "a macro name that is not a reserved word" : "a macro name");
+	raw_expect(p, TOK_LPAREN, "'(' after the macro's name");
+	struct macro *m = calloc(1, sizeof *m);
+	if (!m) abort();
+	m->refs = 1;
+	m->name = name.str;
+	m->pos = at;
+	struct value *holder = malloc(sizeof *holder);
+	if (!holder) abort();
+	holder->kind = VAL_MACRO;
+	holder->mac = m;
+	int slot = parse_own(p, holder, free_macro_value);
+	int cap = 0;
+	struct token t = parse_raw(p);
+	while (t.kind != TOK_RPAREN) {
+		if (t.kind != TOK_IDENT)
+			raw_expected(p, &t, "a parameter name or ')'");
+		for (int i = 0; i < m->nparams; i++)
+			if (m->params[i] == t.str)
+				parse_error_at(p, t.pos, "macro %s has two parameters named '%s'", m->name, t.str);
+		if (m->nparams == cap) {
+			cap = cap ? cap * 2 : 4;
+			m->params = realloc(m->params, (size_t)cap * sizeof *m->params);
+			if (!m->params) abort();
+		}
+		m->params[m->nparams++] = t.str;
+		t = parse_raw(p);
+		if (t.kind == TOK_COMMA)
+			t = parse_raw(p);
+		else if (t.kind != TOK_RPAREN)
+			raw_expected(p, &t, "',' or ')' in the parameter list");
+	}
+	struct frame *f = top(p);
+	m->file = f->file;
+	m->body = f->pos;
+	skip_block(p, STOP_END, 0, at, "#macro");
+	m->end = f->pos - 2; /* the '#' of the #end */
+	parse_release(p, slot);
+	free(holder);
+	struct value v = {.kind = VAL_MACRO, .pos = at, .mac = m};
+	sym_set(p->globals, name.str, v);
+}
+
+enum { MAX_MACRO_ARGS = 256 };
+
+void parse_call_macro(struct parser *p, const struct token *name, struct macro *m)
+{
+	struct token lp = parse_raw(p);
+	if (lp.kind != TOK_LPAREN)
+		raw_expected(p, &lp, "'(' after the macro name");
+	struct symtab *locals = sym_new();
+	int slot = parse_own(p, locals, (void (*)(void *))sym_free);
+	int n = 0;
+	struct frame *f = top(p);
+	if (f->pos < f->end && f->toks[f->pos].kind == TOK_RPAREN) {
+		f->pos++;
+	} else {
+		for (;;) {
+			f = top(p);
+			const struct token *a = &f->toks[f->pos];
+			struct value v;
+			memset(&v, 0, sizeof v);
+			/* A lone identifier is passed by reference: #declare of the
+			 * parameter inside the macro changes the caller's variable. */
+			bool byref = false;
+			if (a->kind == TOK_IDENT && f->pos + 1 < f->end &&
+			    (f->toks[f->pos + 1].kind == TOK_COMMA || f->toks[f->pos + 1].kind == TOK_RPAREN)) {
+				const char *target = a->str;
+				struct value *b = parse_lookup(p, target);
+				if (b && b->kind != VAL_MACRO) {
+					struct symtab *t = parse_declare_table(p, &target);
+					v.kind = VAL_ALIAS;
+					v.alias.table = t;
+					v.alias.name = target;
+					v.pos = a->pos;
+					byref = true;
+					f->pos++;
+				}
+			}
+			if (!byref) {
+				if (!parse_item_value(p, &v)) {
+					if (!parse_starts_expression(p))
+						parse_expected(p, "a macro argument");
+					v = parse_expression(p);
+				}
+				parse_take(p, &v);
+			}
+			if (n < m->nparams)
+				sym_set(locals, m->params[n], v);
+			else
+				val_clear(&v);
+			n++;
+			if (n > MAX_MACRO_ARGS)
+				parse_error_at(p, name->pos, "more than %d arguments in a macro call", MAX_MACRO_ARGS);
+			if (byref) {
+				struct token d = parse_raw(p);
+				if (d.kind == TOK_RPAREN)
+					break;
+				continue; /* the comma */
+			}
+			if (parse_accept(p, TOK_COMMA))
+				continue;
+			if (parse_accept(p, TOK_RPAREN))
+				break;
+			parse_expected(p, "',' or ')' after a macro argument");
+		}
+	}
+	if (n != m->nparams)
+		parse_error_at(p, name->pos, "macro %s takes %d argument%s, but %d %s given", m->name, m->nparams,
+		               m->nparams == 1 ? "" : "s", n, n == 1 ? "was" : "were");
+	const struct srcfile *sf = src_file(p->sm, m->file);
+	parse_release(p, slot);
+	struct frame *mf;
+	{
+		/* push_frame's checks, then fill in the body. */
+		if (p->nframes == MAX_FRAMES) {
+			sym_free(locals);
+			parse_error_at(p, name->pos, "macro calls nested too deeply (more than %d levels): is %s recursing without end?", MAX_FRAMES, m->name);
+		}
+		mf = &p->frames[p->nframes++];
+		memset(mf, 0, sizeof *mf);
+	}
+	mf->kind = FRAME_MACRO;
+	mf->file = m->file;
+	mf->toks = sf->toks;
+	mf->pos = m->body;
+	mf->end = m->end;
+	mf->from = name->pos;
+	mf->macro = m->name;
+	mf->locals = locals;
+	mf->nconds = p->nconds;
+}
+
+/* ---- #declare, #local, #undef ---- */
+
+/* Run the directives waiting in the lookahead that close the blocks an
+ * operand was inside (#else, #end ... of `#declare A = #if (c) 1 #else 2
+ * #end;`). Returns when the lookahead is something else. */
+static void run_closing_directives(struct parser *p)
+{
+	for (;;) {
+		const struct token *t = parse_peek_cont(p);
+		if (t->kind != TOK_HASH)
+			return;
+		struct frame *f = top(p);
+		const struct token *k = f->pos + 1 < f->end ? &f->toks[f->pos + 1] : NULL;
+		if (!k || k->kind != TOK_KEYWORD)
+			return;
+		switch (k->kw) {
+		case KW_ELSE: case KW_ELSEIF: case KW_END: case KW_BREAK: case KW_CASE: case KW_RANGE:
+			break;
+		default:
+			return;
+		}
+		p->have_cur = false;
+		f->pos++; /* the '#' */
+		parse_directive(p, f->pos - 1);
+	}
+}
+
+/* #declare IDENT = value [;]  /  #local IDENT = value [;] */
+static void dir_declare(struct parser *p, bool local)
+{
+	struct token id = parse_raw(p);
+	if (id.kind == TOK_KEYWORD)
+		parse_error_at(p, id.pos, "'%s' is a reserved word and cannot be declared", kw_names[id.kw]);
+	if (id.kind != TOK_IDENT)
+		raw_expected(p, &id, "an identifier to declare");
+	parse_expect(p, TOK_EQ);
+	struct value v;
+	if (!parse_item_value(p, &v)) {
+		if (!parse_starts_expression(p))
+			parse_expected(p, "a value after '='");
+		v = parse_expression(p);
+	}
+	parse_take(p, &v);
+	v.pos = id.pos;
+	bool numeric = val_is_numeric(&v);
+	const char *name = id.str;
+	struct symtab *t = local ? parse_local_table(p) : parse_declare_table(p, &name);
+	sym_set(t, name, v);
+	run_closing_directives(p);
+	if (parse_peek_cont(p)->kind == TOK_SEMI)
+		parse_advance(p);
+	else if (numeric && p->version >= 3.7)
+		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray 3.7 needs it for floats, vectors and colors", id.str);
+}
+
+/* #undef IDENT: removes the innermost binding. */
+static void dir_undef(struct parser *p)
+{
+	struct token id = parse_raw(p);
+	if (id.kind != TOK_IDENT)
+		raw_expected(p, &id, "an identifier after #undef");
+	bool found = false;
+	for (int i = p->nframes - 1; i >= 0 && !found; i--)
+		if (p->frames[i].locals)
+			found = sym_remove(p->frames[i].locals, id.str);
+	if (!found)
+		found = sym_remove(p->globals, id.str);
+	if (!found)
+		parse_warning_at(p, id.pos, "#undef of '%s', which is not declared", id.str);
+}
+
+/* ---- files and messages ---- */
+
+static bool readable(const char *path) { return access(path, R_OK) == 0; }
+
+/* Find an #include file: the including file's folder, the current folder,
+ * each +L path, then lucent's stdlib. Returns a malloc'd path or NULL. */
+static char *find_include(struct parser *p, const char *name, uint32_t from_file)
+{
+	char buf[PATH_MAX * 2];
+	if (name[0] == '/')
+		return readable(name) ? strdup(name) : NULL;
+	const struct srcfile *sf = src_file(p->sm, from_file);
+	if (sf) {
+		const char *slash = strrchr(sf->path, '/');
+		if (slash) {
+			snprintf(buf, sizeof buf, "%.*s/%s", (int)(slash - sf->path), sf->path, name);
+			if (readable(buf))
+				return strdup(buf);
+		}
+	}
+	if (readable(name))
+		return strdup(name);
+	for (size_t i = 0; i < p->o->nlib_paths; i++) {
+		snprintf(buf, sizeof buf, "%s/%s", p->o->lib_paths[i], name);
+		if (readable(buf))
+			return strdup(buf);
+	}
+	if (p->o->stdlib_dir) {
+		snprintf(buf, sizeof buf, "%s/%s", p->o->stdlib_dir, name);
+		if (readable(buf))
+			return strdup(buf);
+	}
+	return NULL;
+}
+
+/* #include STRING */
+static void dir_include(struct parser *p, struct srcpos at)
+{
+	/* parse_string reads nothing past the string, so the file is entered
+	 * before any later token of the including file. */
+	const char *name = parse_string(p);
+	char *path = find_include(p, name, at.file);
+	if (!path)
+		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
+	uint32_t file = src_find(p->sm, path);
+	if (!file)
+		file = src_load(p->sm, path);
+	int err = errno;
+	free(path);
+	if (!file)
+		parse_error_at(p, at, "cannot read include file \"%s\": %s", name, strerror(err));
+	parse_push_file(p, file, at);
+}
+
+/* #debug / #warning / #error STRING */
+static void dir_message(struct parser *p, enum kw which, struct srcpos at)
+{
+	const char *text = parse_string(p);
+	if (which == KW_DEBUG) {
+		FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
+		fputs(text, out);
+		fflush(out);
+	} else if (which == KW_WARNING) {
+		parse_warning_at(p, at, "%s", text);
+	} else {
+		parse_error_at(p, at, "#error: %s", text);
+	}
+}
+
+/* #version FLOAT ; */
+static void dir_version(struct parser *p)
+{
+	double v = parse_float(p);
+	p->version = v;
+	p->scene->version = v;
+	p->scene->version_set = true;
+	if (parse_peek_cont(p)->kind == TOK_SEMI)
+		parse_advance(p);
+}
+
+/* ---- dispatch ---- */
+
+void parse_directive(struct parser *p, size_t hash)
+{
+	struct srcpos at = top(p)->toks[hash].pos;
+	struct token kwt = parse_raw(p);
+	if (kwt.kind != TOK_KEYWORD) {
+		char buf[128];
+		parse_error_at(p, kwt.pos, "expected a directive name after '#', found %s", lex_describe(&kwt, buf, sizeof buf));
+	}
+	bool outer_defer = p->defer;
+	p->defer = true;
+	switch (kwt.kw) {
+	case KW_DECLARE: dir_declare(p, false); break;
+	case KW_LOCAL: dir_declare(p, true); break;
+	case KW_UNDEF: dir_undef(p); break;
+	case KW_INCLUDE: dir_include(p, at); break;
+	case KW_DEBUG:
+	case KW_WARNING:
+	case KW_ERROR: dir_message(p, (enum kw)kwt.kw, at); break;
+	case KW_VERSION: dir_version(p); break;
+	case KW_IF: dir_if(p, at); break;
+	case KW_IFDEF: dir_ifdef(p, at, true); break;
+	case KW_IFNDEF: dir_ifdef(p, at, false); break;
+	case KW_ELSE:
+	case KW_ELSEIF: dir_else(p, at, (enum kw)kwt.kw); break;
+	case KW_SWITCH: dir_switch(p, at); break;
+	case KW_CASE:
+	case KW_RANGE: dir_case(p, at, (enum kw)kwt.kw); break;
+	case KW_BREAK: dir_break(p, at); break;
+	case KW_WHILE: dir_while(p, at, hash); break;
+	case KW_FOR: dir_for(p, at); break;
+	case KW_END: dir_end(p, at); break;
+	case KW_MACRO: dir_macro(p, at); break;
+	default:
+		parse_error_at(p, kwt.pos, "unknown directive '#%s'", kw_names[kwt.kw]);
+	}
+	p->defer = outer_defer;
+	/* A '#' that waited behind this directive's operands runs now, unless
+	 * an enclosing directive is still reading its own. */
+	if (!outer_defer && p->have_cur && p->cur.kind == TOK_HASH)
+		p->have_cur = false;
+}

@@ -1,0 +1,2 @@
+// expect: 2:1: #case outside a #switch
+#case (1)

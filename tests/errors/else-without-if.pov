@@ -1,0 +1,2 @@
+// expect: 2:1: #else without an open #if
+#else

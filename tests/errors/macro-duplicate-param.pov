@@ -1,0 +1,2 @@
+// expect: 2:13: macro M has two parameters named 'A'
+#macro M(A, A) #end
