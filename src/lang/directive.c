@@ -502,6 +502,50 @@ static void run_closing_directives(struct parser *p)
 	}
 }
 
+/* IDENT '[' INT ']' ... '=' value : assign one element of an array. */
+static void declare_element(struct parser *p, struct symtab *t, const char *name, struct srcpos at)
+{
+	struct value *av = sym_get(t, name);
+	if (!av)
+		parse_error_at(p, at, "'%s' is not declared, so it has no elements to assign", name);
+	if (av->kind != VAL_ARRAY)
+		parse_error_at(p, at, "'%s' is a %s, not an array", name, val_kind_name(av->kind));
+	size_t idx = 0;
+	const struct array *a = av->arr;
+	for (int d = 0; d < a->ndims; d++) {
+		parse_expect(p, TOK_LBRACKET);
+		struct value e = parse_expression(p);
+		parse_need_float(p, &e, "an array index");
+		double i = trunc(e.v[0]);
+		if (i < 0 || i >= a->dims[d])
+			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
+			               i, d + 1, name, a->dims[d]);
+		parse_expect(p, TOK_RBRACKET);
+		idx = idx * (size_t)a->dims[d] + (size_t)i;
+	}
+	parse_expect(p, TOK_EQ);
+	struct value v = parse_rvalue(p);
+	bool numeric = val_is_numeric(&v);
+	/* Look the array up again: reading the value may have run code. */
+	av = sym_get(t, name);
+	if (!av || av->kind != VAL_ARRAY) {
+		val_clear(&v);
+		parse_error_at(p, at, "array '%s' was changed while its element was being assigned", name);
+	}
+	struct array *w = array_unshare(av);
+	if (idx >= w->count) {
+		val_clear(&v);
+		parse_error_at(p, at, "array '%s' was resized while its element was being assigned", name);
+	}
+	val_clear(&w->elems[idx]);
+	w->elems[idx] = v;
+	run_closing_directives(p);
+	if (parse_peek_cont(p)->kind == TOK_SEMI)
+		parse_advance(p);
+	else if (numeric && p->version >= 3.7)
+		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s[...]': POV-Ray 3.7 needs it for floats, vectors and colors", name);
+}
+
 /* #declare IDENT = value [;]  /  #local IDENT = value [;] */
 static void dir_declare(struct parser *p, bool local)
 {
@@ -510,18 +554,20 @@ static void dir_declare(struct parser *p, bool local)
 		parse_error_at(p, id.pos, "'%s' is a reserved word and cannot be declared", kw_names[id.kw]);
 	if (id.kind != TOK_IDENT)
 		raw_expected(p, &id, "an identifier to declare");
-	parse_expect(p, TOK_EQ);
-	struct value v;
-	if (!parse_item_value(p, &v)) {
-		if (!parse_starts_expression(p))
-			parse_expected(p, "a value after '='");
-		v = parse_expression(p);
-	}
-	parse_take(p, &v);
-	v.pos = id.pos;
-	bool numeric = val_is_numeric(&v);
 	const char *name = id.str;
 	struct symtab *t = local ? parse_local_table(p) : parse_declare_table(p, &name);
+	if (parse_is(p, TOK_LBRACKET)) {
+		declare_element(p, t, name, id.pos);
+		return;
+	}
+	parse_expect(p, TOK_EQ);
+	struct value v = parse_rvalue(p);
+	v.pos = id.pos;
+	bool numeric = val_is_numeric(&v);
+	/* The table may have changed while the value was read (a macro call
+	 * in it); look again. */
+	name = id.str;
+	t = local ? parse_local_table(p) : parse_declare_table(p, &name);
 	sym_set(t, name, v);
 	run_closing_directives(p);
 	if (parse_peek_cont(p)->kind == TOK_SEMI)

@@ -5,51 +5,28 @@
  * by a table of binding strengths. */
 #include "lang/parser.h"
 
+#include "lang/intern.h"
+
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ---- helpers ---- */
 
-static struct value num(double x, struct srcpos pos)
-{
-	struct value v = {.kind = VAL_FLOAT, .n = 1, .pos = pos};
-	v.v[0] = x;
-	return v;
-}
-
-static struct value vec(int n, const double *c, enum val_kind kind, struct srcpos pos)
-{
-	struct value v = {.kind = kind, .n = n, .pos = pos};
-	for (int i = 0; i < 5; i++)
-		v.v[i] = i < n ? c[i] : 0;
-	return v;
-}
-
-static void need_numeric(struct parser *p, const struct value *v, const char *what)
+void parse_need_numeric(struct parser *p, const struct value *v, const char *what)
 {
 	if (!val_is_numeric(v))
 		parse_error_at(p, v->pos, "%s needs a number, vector or color, not a %s", what, val_kind_name(v->kind));
 }
 
-static void need_float(struct parser *p, const struct value *v, const char *what)
+void parse_need_float(struct parser *p, const struct value *v, const char *what)
 {
 	if (v->kind != VAL_FLOAT)
 		parse_error_at(p, v->pos, "%s needs a float, not a %s", what, val_kind_name(v->kind));
 }
 
-/* Promote a to n components (float: every component; vector: zeros). */
-static void widen(struct value *a, int n)
-{
-	if (a->n >= n)
-		return;
-	if (a->kind == VAL_FLOAT)
-		for (int i = 1; i < n; i++)
-			a->v[i] = a->v[0];
-	else
-		for (int i = a->n; i < n; i++)
-			a->v[i] = 0;
-	a->n = n;
-}
+#define need_numeric parse_need_numeric
+#define need_float parse_need_float
 
 static struct value parse_unary(struct parser *p);
 static struct value parse_binary(struct parser *p, int min_prec, bool in_vector);
@@ -108,11 +85,11 @@ static struct value apply(struct parser *p, enum op op, struct value a, struct v
 		case OP_NE: r = x != y; break;
 		default: break;
 		}
-		return num(r, a.pos);
+		return val_float(r, a.pos);
 	}
 	int n = a.n > b.n ? a.n : b.n;
-	widen(&a, n);
-	widen(&b, n);
+	val_widen(&a, n);
+	val_widen(&b, n);
 	struct value r = a;
 	r.kind = (a.kind == VAL_COLOR || b.kind == VAL_COLOR) ? VAL_COLOR : n > 1 ? VAL_VECTOR : VAL_FLOAT;
 	for (int i = 0; i < n; i++) {
@@ -162,10 +139,10 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 		parse_expect(p, TOK_COLON);
 		struct value b = parse_cond(p, in_vector);
 		if (c.v[0] != 0) {
-			val_clear(&b);
+			parse_drop(p, &b);
 			c = a;
 		} else {
-			val_clear(&a);
+			parse_drop(p, &a);
 			c = b;
 		}
 	}
@@ -197,7 +174,7 @@ static struct value parse_vector_literal(struct parser *p)
 	parse_advance(p);
 	if (n < 2)
 		parse_error_at(p, at, "a vector needs at least 2 components");
-	return vec(n, c, VAL_VECTOR, at);
+	return val_vector(n, c, VAL_VECTOR, at);
 }
 
 int parse_number_list(struct parser *p, double *out, int max)
@@ -231,7 +208,7 @@ static struct value parse_color_keyword(struct parser *p, enum kw k)
 	struct value e = parse_binary(p, 4, false);
 	need_numeric(p, &e, kw_names[k]);
 	int want = (k == KW_RGB || k == KW_SRGB) ? 3 : (k == KW_RGBFT || k == KW_SRGBFT) ? 5 : 4;
-	widen(&e, want);
+	val_widen(&e, want);
 	double c[5] = {e.v[0], e.v[1], e.v[2], 0, 0};
 	if (k == KW_RGBF || k == KW_SRGBF)
 		c[3] = e.v[3];
@@ -244,7 +221,7 @@ static struct value parse_color_keyword(struct parser *p, enum kw k)
 	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
 		for (int i = 0; i < 3; i++)
 			c[i] = srgb_decode(c[i]);
-	return vec(5, c, VAL_COLOR, at);
+	return val_vector(5, c, VAL_COLOR, at);
 }
 
 static int color_component(enum kw k)
@@ -267,14 +244,14 @@ static struct value parse_color_body(struct parser *p, struct srcpos at)
 	const struct token *t = parse_peek(p);
 	if (t->kind == TOK_KEYWORD && (color_component((enum kw)t->kw) >= 0 || t->kw == KW_GRAY)) {
 		double z[5] = {0};
-		c = vec(5, z, VAL_COLOR, at);
+		c = val_vector(5, z, VAL_COLOR, at);
 	} else {
 		c = parse_binary(p, 1, false);
 		need_numeric(p, &c, "a color");
 		if (c.kind != VAL_COLOR) {
-			widen(&c, 3);
+			val_widen(&c, 3);
 			double z[5] = {c.v[0], c.v[1], c.v[2], c.n > 3 ? c.v[3] : 0, c.n > 4 ? c.v[4] : 0};
-			c = vec(5, z, VAL_COLOR, at);
+			c = val_vector(5, z, VAL_COLOR, at);
 		}
 	}
 	for (;;) {
@@ -298,109 +275,13 @@ static bool builtin_vector(enum kw k, struct value *out, struct srcpos pos)
 	static const double X[3] = {1, 0, 0}, Y[3] = {0, 1, 0}, Z[3] = {0, 0, 1};
 	static const double T[4] = {0, 0, 0, 1}, U[2] = {1, 0}, V[2] = {0, 1};
 	switch (k) {
-	case KW_X: *out = vec(3, X, VAL_VECTOR, pos); return true;
-	case KW_Y: *out = vec(3, Y, VAL_VECTOR, pos); return true;
-	case KW_Z: *out = vec(3, Z, VAL_VECTOR, pos); return true;
-	case KW_T: *out = vec(4, T, VAL_VECTOR, pos); return true;
-	case KW_U: *out = vec(2, U, VAL_VECTOR, pos); return true;
-	case KW_V: *out = vec(2, V, VAL_VECTOR, pos); return true;
+	case KW_X: *out = val_vector(3, X, VAL_VECTOR, pos); return true;
+	case KW_Y: *out = val_vector(3, Y, VAL_VECTOR, pos); return true;
+	case KW_Z: *out = val_vector(3, Z, VAL_VECTOR, pos); return true;
+	case KW_T: *out = val_vector(4, T, VAL_VECTOR, pos); return true;
+	case KW_U: *out = val_vector(2, U, VAL_VECTOR, pos); return true;
+	case KW_V: *out = val_vector(2, V, VAL_VECTOR, pos); return true;
 	default: return false;
-	}
-}
-
-/* Built-in float functions of one or two float arguments. */
-struct fn1 {
-	enum kw kw;
-	int nargs;
-	double (*f1)(double);
-	double (*f2)(double, double);
-};
-
-static double f_degrees(double a) { return a * 180.0 / M_PI; }
-static double f_radians(double a) { return a * M_PI / 180.0; }
-static double f_int(double a) { return trunc(a); }
-static double f_mod(double a, double b) { return fmod(a, b); }
-static double f_div(double a, double b) { return trunc(a / b); }
-static double f_sqr(double a) { return a * a; }
-
-static const struct fn1 float_fns[] = {
-	{KW_ABS, 1, fabs, NULL}, {KW_ACOS, 1, acos, NULL}, {KW_ACOSH, 1, acosh, NULL},
-	{KW_ASIN, 1, asin, NULL}, {KW_ASINH, 1, asinh, NULL}, {KW_ATAN, 1, atan, NULL},
-	{KW_ATANH, 1, atanh, NULL}, {KW_CEIL, 1, ceil, NULL}, {KW_COS, 1, cos, NULL},
-	{KW_COSH, 1, cosh, NULL}, {KW_DEGREES, 1, f_degrees, NULL}, {KW_EXP, 1, exp, NULL},
-	{KW_FLOOR, 1, floor, NULL}, {KW_INT, 1, f_int, NULL}, {KW_LN, 1, log, NULL},
-	{KW_LOG, 1, log10, NULL}, {KW_RADIANS, 1, f_radians, NULL}, {KW_SIN, 1, sin, NULL},
-	{KW_SINH, 1, sinh, NULL}, {KW_SQRT, 1, sqrt, NULL}, {KW_SQR, 1, f_sqr, NULL},
-	{KW_TAN, 1, tan, NULL}, {KW_TANH, 1, tanh, NULL},
-	{KW_ATAN2, 2, NULL, atan2}, {KW_MOD, 2, NULL, f_mod}, {KW_POW, 2, NULL, pow},
-	{KW_DIV, 2, NULL, f_div},
-};
-
-static struct value parse_float_call(struct parser *p, const struct fn1 *fn, struct srcpos at)
-{
-	parse_advance(p);
-	parse_expect(p, TOK_LPAREN);
-	double a[2];
-	for (int i = 0; i < fn->nargs; i++) {
-		if (i > 0)
-			parse_expect(p, TOK_COMMA);
-		struct value e = parse_cond(p, false);
-		need_float(p, &e, kw_names[fn->kw]);
-		a[i] = e.v[0];
-	}
-	parse_expect(p, TOK_RPAREN);
-	double r = fn->nargs == 1 ? fn->f1(a[0]) : fn->f2(a[0], a[1]);
-	if (!isfinite(r))
-		parse_error_at(p, at, "%s(): result is not a finite number (argument out of range?)", kw_names[fn->kw]);
-	return num(r, at);
-}
-
-/* min/max(a, b, ...) */
-static struct value parse_minmax(struct parser *p, bool is_max, struct srcpos at)
-{
-	parse_advance(p);
-	parse_expect(p, TOK_LPAREN);
-	double r = 0;
-	int n = 0;
-	do {
-		struct value e = parse_cond(p, false);
-		need_float(p, &e, is_max ? "max" : "min");
-		if (n++ == 0 || (is_max ? e.v[0] > r : e.v[0] < r))
-			r = e.v[0];
-	} while (parse_accept(p, TOK_COMMA));
-	parse_expect(p, TOK_RPAREN);
-	if (n < 2)
-		parse_error_at(p, at, "%s() needs at least two arguments", is_max ? "max" : "min");
-	return num(r, at);
-}
-
-static vec3 as_vec3(struct parser *p, struct value e, const char *what)
-{
-	need_numeric(p, &e, what);
-	widen(&e, 3);
-	return v3(e.v[0], e.v[1], e.v[2]);
-}
-
-/* vlength/vnormalize/vdot/vcross(...) */
-static struct value parse_vector_call(struct parser *p, enum kw k, struct srcpos at)
-{
-	parse_advance(p);
-	parse_expect(p, TOK_LPAREN);
-	vec3 a = as_vec3(p, parse_cond(p, false), kw_names[k]);
-	vec3 b = v3(0, 0, 0);
-	if (k == KW_VDOT || k == KW_VCROSS) {
-		parse_expect(p, TOK_COMMA);
-		b = as_vec3(p, parse_cond(p, false), kw_names[k]);
-	}
-	parse_expect(p, TOK_RPAREN);
-	switch (k) {
-	case KW_VLENGTH: return num(v3_len(a), at);
-	case KW_VDOT: return num(v3_dot(a, b), at);
-	default: {
-		vec3 r = k == KW_VCROSS ? v3_cross(a, b) : v3_norm(a);
-		double c[3] = {r.x, r.y, r.z};
-		return vec(3, c, VAL_VECTOR, at);
-	}
 	}
 }
 
@@ -415,31 +296,86 @@ static struct value parse_keyword_primary(struct parser *p)
 		return v;
 	}
 	switch (k) {
-	case KW_PI: parse_advance(p); return num(M_PI, at);
-	case KW_TRUE: case KW_YES: case KW_ON: parse_advance(p); return num(1, at);
-	case KW_FALSE: case KW_NO: case KW_OFF: parse_advance(p); return num(0, at);
-	case KW_CLOCK: parse_advance(p); return num(p->o->clock, at);
-	case KW_CLOCK_DELTA: parse_advance(p); return num(0, at);
-	case KW_CLOCK_ON: parse_advance(p); return num(0, at);
-	case KW_IMAGE_WIDTH: parse_advance(p); return num(p->o->image_width, at);
-	case KW_IMAGE_HEIGHT: parse_advance(p); return num(p->o->image_height, at);
-	case KW_VERSION: parse_advance(p); return num(p->version, at);
+	case KW_PI: parse_advance(p); return val_float(M_PI, at);
+	case KW_TRUE: case KW_YES: case KW_ON: parse_advance(p); return val_float(1, at);
+	case KW_FALSE: case KW_NO: case KW_OFF: parse_advance(p); return val_float(0, at);
+	case KW_CLOCK: parse_advance(p); return val_float(p->o->clock, at);
+	case KW_CLOCK_DELTA: parse_advance(p); return val_float(0, at);
+	case KW_CLOCK_ON: parse_advance(p); return val_float(0, at);
+	case KW_FRAME_NUMBER: case KW_INITIAL_FRAME: case KW_FINAL_FRAME:
+		parse_advance(p);
+		return val_float(k == KW_FINAL_FRAME ? 1 : k == KW_INITIAL_FRAME ? 1 : 0, at);
+	case KW_INITIAL_CLOCK: parse_advance(p); return val_float(0, at);
+	case KW_FINAL_CLOCK: parse_advance(p); return val_float(1, at);
+	case KW_IMAGE_WIDTH: parse_advance(p); return val_float(p->o->image_width, at);
+	case KW_IMAGE_HEIGHT: parse_advance(p); return val_float(p->o->image_height, at);
+	case KW_VERSION: parse_advance(p); return val_float(p->version, at);
+	case KW_INPUT_FILE_NAME: {
+		parse_advance(p);
+		struct value sv = {.kind = VAL_STRING, .pos = at, .str = parse_intern(p, p->o->input, strlen(p->o->input))};
+		return sv;
+	}
 	case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT:
 	case KW_SRGB: case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT:
 		return parse_color_keyword(p, k);
 	case KW_COLOR: case KW_COLOUR:
 		parse_advance(p);
 		return parse_color_body(p, at);
-	case KW_MIN: return parse_minmax(p, false, at);
-	case KW_MAX: return parse_minmax(p, true, at);
-	case KW_VLENGTH: case KW_VNORMALIZE: case KW_VDOT: case KW_VCROSS:
-		return parse_vector_call(p, k, at);
 	default:
-		for (size_t i = 0; i < sizeof float_fns / sizeof float_fns[0]; i++)
-			if (float_fns[i].kw == k)
-				return parse_float_call(p, &float_fns[i], at);
+		if (builtin_is_function(k))
+			return builtin_call(p);
 	}
 	parse_expected(p, "an expression");
+}
+
+static void free_value_holder(void *h)
+{
+	val_clear(h);
+	free(h);
+}
+
+/* A copy of an identifier's value for an expression. Scene items (objects,
+ * textures, ...) are held by the parse until a consumer takes them, so an
+ * error in the rest of the expression frees them. */
+static struct value ident_value_copy(struct parser *p, const struct value *v, struct srcpos at)
+{
+	struct value c = val_copy(v);
+	c.pos = at;
+	switch (c.kind) {
+	case VAL_OBJECT: case VAL_TEXTURE: case VAL_PIGMENT: case VAL_FINISH: case VAL_CAMERA:
+	case VAL_LIGHT: case VAL_TRANSFORM: case VAL_ARRAY: case VAL_SPLINE: case VAL_FUNCTION:
+	case VAL_FILE: case VAL_MACRO: {
+		struct value *h = malloc(sizeof *h);
+		if (!h) abort();
+		*h = c;
+		c.owner = parse_own(p, h, free_value_holder) + 1;
+		break;
+	}
+	default:
+		break;
+	}
+	return c;
+}
+
+/* '[' INT ']' ... : the element of an array an index list selects. */
+static const struct value *array_element(struct parser *p, const struct array *a, const char *name, struct srcpos at)
+{
+	size_t idx = 0;
+	for (int d = 0; d < a->ndims; d++) {
+		parse_expect(p, TOK_LBRACKET);
+		struct value e = parse_expression(p);
+		need_float(p, &e, "an array index");
+		double i = trunc(e.v[0]);
+		if (i < 0 || i >= a->dims[d])
+			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
+			               i, d + 1, name, a->dims[d]);
+		parse_expect(p, TOK_RBRACKET);
+		idx = idx * (size_t)a->dims[d] + (size_t)i;
+	}
+	const struct value *el = &a->elems[idx];
+	if (el->kind == VAL_NONE)
+		parse_error_at(p, at, "element of array '%s' used before it was given a value", name);
+	return el;
 }
 
 static struct value parse_primary(struct parser *p)
@@ -450,7 +386,7 @@ static struct value parse_primary(struct parser *p)
 	case TOK_NUMBER: {
 		double x = t->num;
 		parse_advance(p);
-		return num(x, at);
+		return val_float(x, at);
 	}
 	case TOK_LPAREN: {
 		parse_advance(p);
@@ -467,12 +403,33 @@ static struct value parse_primary(struct parser *p)
 		return v;
 	}
 	case TOK_IDENT: {
-		struct value *v = parse_lookup(p, t->str);
+		const char *name = t->str;
+		struct value *v = parse_lookup(p, name);
 		if (!v)
-			parse_error(p, "undefined identifier '%s'", t->str);
-		struct value c = val_copy(v);
-		c.pos = at;
+			parse_undefined(p, name);
+		/* Hold the binding while its suffix is read: a macro frame that
+		 * ends meanwhile must not take the value with it. */
+		struct value c = ident_value_copy(p, v, at);
 		parse_advance(p);
+		if (c.kind == VAL_ARRAY && parse_peek_cont(p)->kind == TOK_LBRACKET) {
+			struct value el = ident_value_copy(p, array_element(p, c.arr, name, at), at);
+			parse_drop(p, &c);
+			return el;
+		}
+		if ((c.kind == VAL_FUNCTION || c.kind == VAL_SPLINE) && parse_peek_cont(p)->kind == TOK_LPAREN) {
+			struct value r;
+			if (c.kind == VAL_FUNCTION) {
+				r = parse_call_function(p, c.fn, at);
+			} else {
+				parse_advance(p);
+				struct value tv = parse_expression(p);
+				need_float(p, &tv, "a spline's parameter");
+				parse_expect(p, TOK_RPAREN);
+				r = spline_eval(c.spl, tv.v[0], at);
+			}
+			parse_drop(p, &c);
+			return r;
+		}
 		return c;
 	}
 	case TOK_KEYWORD:
@@ -503,14 +460,14 @@ static struct value parse_postfix(struct parser *p)
 		default: parse_expected(p, "a component name after '.'");
 		}
 		if (i < 0) {
-			widen(&v, 3);
-			v = num(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2], v.pos);
+			val_widen(&v, 3);
+			v = val_float(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2], v.pos);
 		} else {
 			if (v.kind == VAL_FLOAT)
-				widen(&v, 5);
+				val_widen(&v, 5);
 			if (i >= v.n)
 				parse_error(p, "this %d-component value has no '.%s'", v.n, kw_names[t->kw]);
-			v = num(v.v[i], v.pos);
+			v = val_float(v.v[i], v.pos);
 		}
 		parse_advance(p);
 	}
@@ -566,13 +523,11 @@ bool parse_starts_expression(struct parser *p)
 		case KW_CLOCK: case KW_CLOCK_DELTA: case KW_CLOCK_ON: case KW_IMAGE_WIDTH: case KW_IMAGE_HEIGHT:
 		case KW_VERSION: case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT: case KW_SRGB:
 		case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT: case KW_COLOR: case KW_COLOUR:
-		case KW_MIN: case KW_MAX: case KW_VLENGTH: case KW_VNORMALIZE: case KW_VDOT: case KW_VCROSS:
+		case KW_FRAME_NUMBER: case KW_INITIAL_FRAME: case KW_FINAL_FRAME: case KW_INITIAL_CLOCK:
+		case KW_FINAL_CLOCK: case KW_INPUT_FILE_NAME:
 			return true;
 		default:
-			for (size_t i = 0; i < sizeof float_fns / sizeof float_fns[0]; i++)
-				if (float_fns[i].kw == t->kw)
-					return true;
-			return false;
+			return builtin_is_function((enum kw)t->kw);
 		}
 	}
 	default:
@@ -594,7 +549,7 @@ vec3 parse_vector(struct parser *p)
 	if (v.kind == VAL_FLOAT || v.kind == VAL_VECTOR) {
 		if (v.n > 3 && v.kind == VAL_VECTOR)
 			parse_error_at(p, v.pos, "expected a 3-component vector, found a %d-component one", v.n);
-		widen(&v, 3);
+		val_widen(&v, 3);
 		return v3(v.v[0], v.v[1], v.v[2]);
 	}
 	parse_error_at(p, v.pos, "expected a vector, found a %s", val_kind_name(v.kind));
@@ -613,20 +568,24 @@ struct rgbft parse_color(struct parser *p)
 const char *parse_string(struct parser *p)
 {
 	const struct token *t = parse_peek(p);
+	struct srcpos at = t->pos;
 	if (t->kind == TOK_STRING) {
 		const char *s = t->str;
 		parse_advance(p);
 		return s;
 	}
-	if (t->kind == TOK_IDENT) {
-		struct value *v = parse_lookup(p, t->str);
-		if (v && v->kind == VAL_STRING) {
-			parse_advance(p);
-			return v->str;
-		}
-		if (!v)
-			parse_error(p, "undefined identifier '%s'", t->str);
-		parse_error(p, "expected a string, but '%s' is a %s", t->str, val_kind_name(v->kind));
+	/* Strings have no operators: one primary is the whole expression, and
+	 * nothing after it is read. */
+	struct value v = parse_primary(p);
+	if (v.kind != VAL_STRING) {
+		const char *kind = val_kind_name(v.kind);
+		parse_drop(p, &v);
+		parse_error_at(p, at, "expected a string, found a %s", kind);
 	}
-	parse_expected(p, "a string");
+	return v.str;
+}
+
+const char *parse_intern(struct parser *p, const char *s, size_t n)
+{
+	return intern(p->names, s, n);
 }

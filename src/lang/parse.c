@@ -321,6 +321,72 @@ struct symtab *parse_declare_table(struct parser *p, const char **name)
 	return v ? t : p->globals;
 }
 
+struct suggest {
+	const char *name;
+	size_t namelen;
+	const char *best;
+	size_t best_dist;
+};
+
+/* Edit distance, capped: the suggestion only matters when it is small. */
+static size_t edit_distance(const char *a, size_t n, const char *b, size_t m)
+{
+	enum { CAP = 64 };
+	if (n >= CAP || m >= CAP)
+		return CAP;
+	size_t row[CAP + 1];
+	for (size_t j = 0; j <= m; j++)
+		row[j] = j;
+	for (size_t i = 1; i <= n; i++) {
+		size_t diag = row[0];
+		row[0] = i;
+		for (size_t j = 1; j <= m; j++) {
+			size_t up = row[j];
+			size_t cost = a[i - 1] == b[j - 1] ? 0 : (a[i - 1] | 32) == (b[j - 1] | 32) ? 0 : 1;
+			size_t best = diag + cost;
+			if (up + 1 < best) best = up + 1;
+			if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
+			row[j] = best;
+			diag = up;
+		}
+	}
+	return row[m];
+}
+
+static void consider(void *arg, const char *cand)
+{
+	struct suggest *s = arg;
+	size_t d = edit_distance(s->name, s->namelen, cand, strlen(cand));
+	if (d < s->best_dist || (d == s->best_dist && s->best && strcmp(cand, s->best) < 0)) {
+		s->best_dist = d;
+		s->best = cand;
+	}
+}
+
+void parse_undefined(struct parser *p, const char *name)
+{
+	struct suggest s = {name, strlen(name), NULL, (size_t)-1};
+	for (int i = p->nframes - 1; i >= 0; i--)
+		if (p->frames[i].locals)
+			sym_each(p->frames[i].locals, consider, &s);
+	sym_each(p->globals, consider, &s);
+	const char *kw_best = NULL;
+	size_t kw_dist = (size_t)-1;
+	for (int k = 1; k < KW__COUNT; k++) {
+		size_t d = edit_distance(name, s.namelen, kw_names[k], strlen(kw_names[k]));
+		if (d < kw_dist) {
+			kw_dist = d;
+			kw_best = kw_names[k];
+		}
+	}
+	size_t limit = s.namelen <= 3 ? 1 : s.namelen / 3;
+	if (s.best && s.best_dist <= limit && s.best_dist <= kw_dist)
+		parse_error(p, "undefined identifier '%s'; did you mean '%s'?", name, s.best);
+	if (kw_best && kw_dist <= limit)
+		parse_error(p, "undefined identifier '%s'; did you mean the keyword '%s'?", name, kw_best);
+	parse_error(p, "undefined identifier '%s'", name);
+}
+
 struct symtab *parse_local_table(struct parser *p)
 {
 	for (int i = p->nframes - 1; i >= 0; i--)

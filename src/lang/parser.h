@@ -72,6 +72,9 @@ struct parser {
 	double version;
 	int expr_depth;
 
+	uint32_t *rng;               /* rand() streams made by seed() */
+	int nrng, caprng;
+
 	struct owned owned[MAX_OWNED];
 	int nowned;
 	struct texture *default_tex; /* #default { texture }: one reference */
@@ -104,6 +107,8 @@ void parse_expect(struct parser *p, enum tok_kind k);
 int parse_own(struct parser *p, void *ptr, void (*fn)(void *));
 void parse_release(struct parser *p, int slot);
 
+/* "undefined identifier 'X'", suggesting the nearest declared name. */
+_Noreturn void parse_undefined(struct parser *p, const char *name);
 /* Symbols: the innermost binding of name (aliases followed), or NULL. */
 struct value *parse_lookup(struct parser *p, const char *name);
 /* The table where #declare NAME would store: the one holding the innermost
@@ -141,10 +146,32 @@ const char *parse_string(struct parser *p);
  * longer than a vector); returns how many were read. */
 int parse_number_list(struct parser *p, double *out, int max);
 
+/* Built-in functions (builtin.c): is k one, and call it (the current
+ * token is its name). */
+bool builtin_is_function(enum kw k);
+struct value builtin_call(struct parser *p);
+/* Typed operands for built-ins and statements. */
+void parse_need_float(struct parser *p, const struct value *v, const char *what);
+void parse_need_numeric(struct parser *p, const struct value *v, const char *what);
+const char *parse_intern(struct parser *p, const char *s, size_t n);
+/* A number formatted as POV-Ray's str(x, l, prec) does. */
+const char *parse_format_float(struct parser *p, double x, int l, int prec);
+
+/* User functions (func.c): `function [(params)] { body }` after the
+ * keyword, and calling one from an expression. */
+struct fn *parse_function(struct parser *p);
+struct value parse_call_function(struct parser *p, const struct fn *f, struct srcpos at);
+/* Splines (func.c): `spline { ... }` and evaluating S(t). */
+struct spline *parse_spline(struct parser *p);
+struct value spline_eval(const struct spline *s, double t, struct srcpos at);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an
  * expression (sphere {...}, pigment {...}); false if not one. */
 bool parse_item_value(struct parser *p, struct value *out);
+/* Any right-hand side of a declaration: a scene item or an expression
+ * (taken from the parse's ownership). */
+struct value parse_rvalue(struct parser *p);
 
 #endif

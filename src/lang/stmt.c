@@ -4,6 +4,7 @@
 #include "lang/parser.h"
 
 #include "geom/shapes.h"
+#include "scene/fn.h"
 #include "scene/camera.h"
 #include "scene/light.h"
 
@@ -463,6 +464,93 @@ static void parse_background(struct parser *p)
 	parse_expect(p, TOK_RBRACE);
 }
 
+/* ---- arrays ---- */
+
+static void free_array_holder(void *h)
+{
+	val_clear(h);
+	free(h);
+}
+
+/* One value for an array element or a declaration's right-hand side. */
+struct value parse_rvalue(struct parser *p)
+{
+	struct value v;
+	if (!parse_item_value(p, &v)) {
+		if (!parse_starts_expression(p))
+			parse_expected(p, "a value");
+		v = parse_expression(p);
+	}
+	parse_take(p, &v);
+	return v;
+}
+
+/* '{' item {',' item} '}' filling dimension d of a from element *next. */
+static void parse_array_init(struct parser *p, struct array *a, int d, size_t *next)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	parse_expect(p, TOK_LBRACE);
+	int count = 0;
+	for (;;) {
+		if (count == a->dims[d])
+			parse_error(p, "too many initialisers for dimension %d of the array (its size is %d)", d + 1, a->dims[d]);
+		if (d + 1 < a->ndims) {
+			parse_array_init(p, a, d + 1, next);
+		} else {
+			struct value v = parse_rvalue(p);
+			a->elems[(*next)++] = v;
+		}
+		count++;
+		if (parse_accept(p, TOK_COMMA)) {
+			if (parse_is(p, TOK_RBRACE))
+				break; /* a trailing comma */
+			continue;
+		}
+		break;
+	}
+	parse_expect(p, TOK_RBRACE);
+	if (count != a->dims[d])
+		parse_error_at(p, at, "dimension %d of the array has size %d, but %d initialiser%s given", d + 1,
+		               a->dims[d], count, count == 1 ? " was" : "s were");
+}
+
+/* array := array '[' INT ']' { '[' INT ']' } [ initialiser ] */
+static struct array *parse_array(struct parser *p)
+{
+	parse_advance(p); /* array */
+	int dims[ARRAY_MAX_DIMS], nd = 0;
+	size_t total = 1;
+	while (parse_is(p, TOK_LBRACKET)) {
+		parse_advance(p);
+		struct srcpos at = parse_peek(p)->pos;
+		double n = parse_float(p);
+		parse_expect(p, TOK_RBRACKET);
+		if (nd == ARRAY_MAX_DIMS)
+			parse_error_at(p, at, "an array has at most %d dimensions", ARRAY_MAX_DIMS);
+		if (!(n >= 1) || n > 1e8)
+			parse_error_at(p, at, "an array dimension must be from 1 to 100000000, not %g", n);
+		dims[nd++] = (int)n;
+		total *= (size_t)n;
+		if (total > 100000000)
+			parse_error_at(p, at, "the array would have more than 100000000 elements");
+	}
+	if (nd == 0)
+		parse_expected(p, "'[' and the array's size");
+	struct value *h = calloc(1, sizeof *h);
+	if (!h) abort();
+	h->kind = VAL_ARRAY;
+	h->arr = array_new(nd, dims);
+	int slot = parse_own(p, h, free_array_holder);
+	if (parse_peek_cont(p)->kind == TOK_LBRACE) {
+		size_t next = 0;
+		parse_array_init(p, h->arr, 0, &next);
+	}
+	struct array *a = h->arr;
+	parse_release(p, slot);
+	free(h);
+	return a;
+}
+
 /* ---- entry points ---- */
 
 static void free_pigment_cb(void *x) { free(x); }
@@ -482,6 +570,18 @@ bool parse_item_value(struct parser *p, struct value *out)
 		return true;
 	}
 	switch (k) {
+	case KW_ARRAY:
+		out->kind = VAL_ARRAY;
+		out->arr = parse_array(p);
+		return true;
+	case KW_SPLINE:
+		out->kind = VAL_SPLINE;
+		out->spl = parse_spline(p);
+		return true;
+	case KW_FUNCTION:
+		out->kind = VAL_FUNCTION;
+		out->fn = parse_function(p);
+		return true;
 	case KW_PIGMENT: {
 		struct pigment *pig = calloc(1, sizeof *pig);
 		if (!pig) abort();

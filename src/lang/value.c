@@ -1,7 +1,9 @@
 /* value.c: values (see value.h). */
 #include "lang/value.h"
 
+#include "lang/lex.h"
 #include "scene/camera.h"
+#include "scene/fn.h"
 #include "scene/light.h"
 
 #include <stdlib.h>
@@ -24,6 +26,10 @@ const char *val_kind_name(enum val_kind k)
 	case VAL_TRANSFORM: return "transform";
 	case VAL_MACRO: return "macro";
 	case VAL_ALIAS: return "reference";
+	case VAL_ARRAY: return "array";
+	case VAL_SPLINE: return "spline";
+	case VAL_FUNCTION: return "function";
+	case VAL_FILE: return "file";
 	}
 	return "?";
 }
@@ -44,6 +50,17 @@ void val_clear(struct value *v)
 			free(v->mac);
 		}
 		break;
+	case VAL_ARRAY:
+		if (--v->arr->refs == 0) {
+			for (size_t i = 0; i < v->arr->count; i++)
+				val_clear(&v->arr->elems[i]);
+			free(v->arr->elems);
+			free(v->arr);
+		}
+		break;
+	case VAL_SPLINE: spline_unref(v->spl); break;
+	case VAL_FUNCTION: fn_unref(v->fn); break;
+	case VAL_FILE: sdl_file_unref(v->file); break;
 	default: break;
 	}
 	v->kind = VAL_NONE;
@@ -68,8 +85,62 @@ struct value val_copy(const struct value *src)
 	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;
 	case VAL_TRANSFORM: v.xf = dup_bytes(src->xf, sizeof *src->xf); break;
 	case VAL_MACRO: v.mac->refs++; break;
+	case VAL_ARRAY: v.arr->refs++; break;
+	case VAL_SPLINE: v.spl->refs++; break;
+	case VAL_FUNCTION: fn_ref(v.fn); break;
+	case VAL_FILE: v.file->refs++; break;
 	default: break;
 	}
 	v.owner = 0;
 	return v;
+}
+
+struct array *array_new(int ndims, const int *dims)
+{
+	struct array *a = calloc(1, sizeof *a);
+	if (!a) abort();
+	a->refs = 1;
+	a->ndims = ndims;
+	a->count = 1;
+	for (int i = 0; i < ndims; i++) {
+		a->dims[i] = dims[i];
+		a->count *= (size_t)dims[i];
+	}
+	a->elems = calloc(a->count ? a->count : 1, sizeof *a->elems);
+	if (!a->elems) abort();
+	return a;
+}
+
+struct array *array_unshare(struct value *v)
+{
+	struct array *a = v->arr;
+	if (a->refs == 1)
+		return a;
+	struct array *c = array_new(a->ndims, a->dims);
+	for (size_t i = 0; i < a->count; i++)
+		c->elems[i] = val_copy(&a->elems[i]);
+	a->refs--;
+	v->arr = c;
+	return c;
+}
+
+void spline_unref(struct spline *s)
+{
+	if (s && --s->refs == 0) {
+		free(s->t);
+		free(s->v);
+		free(s->d2);
+		free(s);
+	}
+}
+
+void sdl_file_unref(struct sdl_file *f)
+{
+	if (f && --f->refs == 0) {
+		if (f->fp)
+			fclose(f->fp);
+		free(f->toks);
+		free(f->text);
+		free(f);
+	}
 }

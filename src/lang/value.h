@@ -9,6 +9,8 @@
 #include "scene/object.h"
 #include "scene/texture.h"
 
+#include <stdio.h>
+
 enum val_kind {
 	VAL_NONE,
 	VAL_FLOAT,
@@ -24,6 +26,10 @@ enum val_kind {
 	VAL_TRANSFORM,
 	VAL_MACRO,    /* a #macro definition (shared, reference-counted) */
 	VAL_ALIAS,    /* a by-reference macro parameter: names another binding */
+	VAL_ARRAY,    /* shared, reference-counted, copied on write */
+	VAL_SPLINE,   /* shared, reference-counted */
+	VAL_FUNCTION, /* a compiled user function (shared, reference-counted) */
+	VAL_FILE,     /* an #fopen'ed file */
 };
 
 struct light;
@@ -39,6 +45,44 @@ struct macro {
 	size_t body, end;        /* token indices: first body token, the '#' of #end */
 	int nparams;
 	const char **params;     /* interned names */
+};
+
+/* An array of up to 5 dimensions; elements of kind VAL_NONE are not yet
+ * initialised. Shared between values by reference count; a write to a
+ * shared array copies it first. */
+enum { ARRAY_MAX_DIMS = 5 };
+struct array {
+	int refs;
+	int ndims;
+	int dims[ARRAY_MAX_DIMS];
+	size_t count;
+	struct value *elems;
+};
+
+enum spline_kind { SPLINE_LINEAR, SPLINE_QUADRATIC, SPLINE_CUBIC, SPLINE_NATURAL };
+
+/* A spline: control points (t, value) sorted by t. */
+struct spline {
+	int refs;
+	enum spline_kind kind;
+	int n;             /* control points */
+	int dim;           /* components of the values (1..5) */
+	double *t;         /* n parameters */
+	double *v;         /* n*5 components */
+	double *d2;        /* NATURAL: second derivatives, n*5 */
+};
+
+struct fn;
+
+/* A file opened by #fopen. */
+struct sdl_file {
+	int refs;
+	FILE *fp;
+	bool writing;
+	const char *name;        /* interned, as written in #fopen */
+	struct token *toks;      /* reading: the file lexed, with its position */
+	size_t ntoks, pos;
+	char *text;
 };
 
 /* Where a by-reference parameter's value really lives. */
@@ -64,6 +108,10 @@ struct value {
 		struct xform *xf;      /* owned */
 		struct macro *mac;     /* one reference */
 		struct alias alias;
+		struct array *arr;     /* one reference */
+		struct spline *spl;    /* one reference */
+		struct fn *fn;         /* one reference */
+		struct sdl_file *file; /* one reference */
 	};
 };
 
@@ -77,5 +125,40 @@ static inline bool val_is_numeric(const struct value *v)
 {
 	return v->kind == VAL_FLOAT || v->kind == VAL_VECTOR || v->kind == VAL_COLOR;
 }
+
+static inline struct value val_float(double x, struct srcpos pos)
+{
+	struct value v = {.kind = VAL_FLOAT, .n = 1, .pos = pos};
+	v.v[0] = x;
+	return v;
+}
+
+/* A vector (kind VAL_VECTOR) or colour (VAL_COLOR, always 5 components)
+ * from n components; the rest are 0. */
+static inline struct value val_vector(int n, const double *c, enum val_kind kind, struct srcpos pos)
+{
+	struct value v = {.kind = kind, .n = kind == VAL_COLOR ? 5 : n, .pos = pos};
+	for (int i = 0; i < 5; i++)
+		v.v[i] = i < n ? c[i] : 0;
+	return v;
+}
+
+/* Promote a to n components: a float fills every component, a vector is
+ * padded with zeros (POV-Ray's rules). */
+static inline void val_widen(struct value *a, int n)
+{
+	if (a->n >= n)
+		return;
+	for (int i = a->n; i < n; i++)
+		a->v[i] = a->kind == VAL_FLOAT ? a->v[0] : 0;
+	a->n = n;
+}
+
+/* A new array with the given dimensions, all elements uninitialised. */
+struct array *array_new(int ndims, const int *dims);
+/* The array of v made unshared (copied if others hold it). */
+struct array *array_unshare(struct value *v);
+void spline_unref(struct spline *s);
+void sdl_file_unref(struct sdl_file *f);
 
 #endif

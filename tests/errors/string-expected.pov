@@ -1,3 +1,3 @@
-// expect: 3:8: expected a string, but 'A' is a float
+// expect: 3:8: expected a string, found a float
 #declare A = 1;
 #debug A

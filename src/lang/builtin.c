@@ -1,0 +1,503 @@
+/* builtin.c: the language's built-in functions (float, vector and string
+ * functions of POV-Ray 3.7's manual). Each parses its own parenthesised
+ * arguments; the current token is the function's keyword. */
+#include "lang/parser.h"
+
+#include "lang/intern.h"
+#include "math/mat.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+/* ---- arguments ---- */
+
+static struct value arg(struct parser *p) { return parse_expression(p); }
+
+static double arg_float(struct parser *p, const char *fn)
+{
+	struct value v = arg(p);
+	parse_need_float(p, &v, fn);
+	return v.v[0];
+}
+
+static vec3 arg_vec3(struct parser *p, const char *fn)
+{
+	struct value v = arg(p);
+	parse_need_numeric(p, &v, fn);
+	if (v.kind == VAL_COLOR)
+		parse_error_at(p, v.pos, "%s needs a vector, not a color", fn);
+	val_widen(&v, 3);
+	return v3(v.v[0], v.v[1], v.v[2]);
+}
+
+static const char *arg_string(struct parser *p, const char *fn)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	struct value v = arg(p);
+	if (v.kind != VAL_STRING) {
+		const char *kind = val_kind_name(v.kind);
+		parse_drop(p, &v);
+		parse_error_at(p, at, "%s needs a string, not a %s", fn, kind);
+	}
+	return v.str;
+}
+
+static void comma(struct parser *p) { parse_expect(p, TOK_COMMA); }
+static void lparen(struct parser *p) { parse_expect(p, TOK_LPAREN); }
+static void rparen(struct parser *p) { parse_expect(p, TOK_RPAREN); }
+
+static struct value str_value(struct parser *p, const char *s, size_t n, struct srcpos at)
+{
+	struct value v = {.kind = VAL_STRING, .pos = at, .str = parse_intern(p, s, n)};
+	return v;
+}
+
+static struct value vec3_value(vec3 r, struct srcpos at)
+{
+	double c[3] = {r.x, r.y, r.z};
+	return val_vector(3, c, VAL_VECTOR, at);
+}
+
+/* An identifier argument naming a value of kind k (dimensions(A) ...). */
+static const struct value *arg_ident(struct parser *p, enum val_kind k, const char *fn)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_IDENT)
+		parse_expected(p, k == VAL_ARRAY ? "an array identifier" : "an object identifier");
+	const struct value *v = parse_lookup(p, t->str);
+	if (!v)
+		parse_undefined(p, t->str);
+	if (v->kind != k)
+		parse_error(p, "%s needs %s, but '%s' is a %s", fn, k == VAL_ARRAY ? "an array" : "an object",
+		            t->str, val_kind_name(v->kind));
+	parse_advance(p);
+	return v;
+}
+
+/* ---- float functions of one or two floats ---- */
+
+static double f_degrees(double a) { return a * 180.0 / M_PI; }
+static double f_radians(double a) { return a * M_PI / 180.0; }
+static double f_int(double a) { return trunc(a); }
+static double f_mod(double a, double b) { return fmod(a, b); }
+static double f_div(double a, double b) { return trunc(a / b); }
+
+struct math_fn {
+	enum kw kw;
+	int nargs;
+	double (*f1)(double);
+	double (*f2)(double, double);
+};
+
+static const struct math_fn math_fns[] = {
+	{KW_ABS, 1, fabs, NULL}, {KW_ACOS, 1, acos, NULL}, {KW_ACOSH, 1, acosh, NULL},
+	{KW_ASIN, 1, asin, NULL}, {KW_ASINH, 1, asinh, NULL}, {KW_ATAN, 1, atan, NULL},
+	{KW_ATANH, 1, atanh, NULL}, {KW_CEIL, 1, ceil, NULL}, {KW_COS, 1, cos, NULL},
+	{KW_COSH, 1, cosh, NULL}, {KW_DEGREES, 1, f_degrees, NULL}, {KW_EXP, 1, exp, NULL},
+	{KW_FLOOR, 1, floor, NULL}, {KW_INT, 1, f_int, NULL}, {KW_LN, 1, log, NULL},
+	{KW_LOG, 1, log10, NULL}, {KW_RADIANS, 1, f_radians, NULL}, {KW_SIN, 1, sin, NULL},
+	{KW_SINH, 1, sinh, NULL}, {KW_SQRT, 1, sqrt, NULL}, {KW_TAN, 1, tan, NULL},
+	{KW_TANH, 1, tanh, NULL},
+	{KW_ATAN2, 2, NULL, atan2}, {KW_MOD, 2, NULL, f_mod}, {KW_POW, 2, NULL, pow},
+	{KW_DIV, 2, NULL, f_div},
+};
+
+static const struct math_fn *math_fn(enum kw k)
+{
+	for (size_t i = 0; i < sizeof math_fns / sizeof math_fns[0]; i++)
+		if (math_fns[i].kw == k)
+			return &math_fns[i];
+	return NULL;
+}
+
+/* ---- string formatting ---- */
+
+const char *parse_format_float(struct parser *p, double x, int l, int prec)
+{
+	char buf[512];
+	int width = l < 0 ? -l : l;
+	if (width > 200)
+		width = 200;
+	if (prec > 100)
+		prec = 100;
+	if (prec < 0)
+		snprintf(buf, sizeof buf, l < 0 ? "%0*f" : "%*f", width, x);
+	else
+		snprintf(buf, sizeof buf, l < 0 ? "%0*.*f" : "%*.*f", width, prec, x);
+	return parse_intern(p, buf, strlen(buf));
+}
+
+/* ---- random numbers (POV-Ray's generator, exactly) ---- */
+
+static double f_seed(struct parser *p, double s)
+{
+	if (p->nrng == p->caprng) {
+		p->caprng = p->caprng ? p->caprng * 2 : 8;
+		p->rng = realloc(p->rng, (size_t)p->caprng * sizeof *p->rng);
+		if (!p->rng) abort();
+	}
+	p->rng[p->nrng] = (uint32_t)(int64_t)s;
+	return p->nrng++;
+}
+
+static double f_rand(struct parser *p, double stream, struct srcpos at)
+{
+	long i = (long)stream;
+	if (i < 0 || i >= p->nrng)
+		parse_error_at(p, at, "rand() needs a stream made by seed(), not %g", stream);
+	p->rng[i] = p->rng[i] * 1812433253u + 12345u;
+	return p->rng[i] / 4294967295.0;
+}
+
+/* ---- geometry queries ---- */
+
+static struct value f_trace(struct parser *p, struct srcpos at)
+{
+	const struct value *o = arg_ident(p, VAL_OBJECT, "trace");
+	comma(p);
+	vec3 from = arg_vec3(p, "trace");
+	comma(p);
+	vec3 dir = arg_vec3(p, "trace");
+	const char *normal_var = NULL;
+	if (parse_accept(p, TOK_COMMA)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_IDENT)
+			parse_expected(p, "an identifier to receive the normal");
+		normal_var = t->str;
+		parse_advance(p);
+	}
+	rparen(p);
+	struct ray r = {from, dir};
+	struct hit h;
+	vec3 pt = v3(0, 0, 0), n = v3(0, 0, 0);
+	if (v3_len(dir) > 0 && object_intersect(o->obj, &r, 0, INFINITY, &h)) {
+		pt = v3_madd(from, dir, h.t);
+		n = object_normal(o->obj, pt, &h);
+		if (v3_dot(n, dir) > 0)
+			n = v3_neg(n);
+	}
+	if (normal_var) {
+		const char *name = normal_var;
+		struct symtab *t = parse_declare_table(p, &name);
+		sym_set(t, name, vec3_value(n, at));
+	}
+	return vec3_value(pt, at);
+}
+
+/* ---- the table ---- */
+
+bool builtin_is_function(enum kw k)
+{
+	if (math_fn(k))
+		return true;
+	switch (k) {
+	case KW_MIN: case KW_MAX: case KW_BITWISE_AND: case KW_BITWISE_OR: case KW_BITWISE_XOR:
+	case KW_SELECT: case KW_SEED: case KW_RAND: case KW_STRCMP: case KW_STRLEN: case KW_VAL:
+	case KW_ASC: case KW_VDOT: case KW_VLENGTH: case KW_DEFINED: case KW_DIMENSIONS:
+	case KW_DIMENSION_SIZE: case KW_FILE_EXISTS: case KW_INSIDE: case KW_VCROSS: case KW_VNORMALIZE:
+	case KW_VROTATE: case KW_VAXIS_ROTATE: case KW_MIN_EXTENT: case KW_MAX_EXTENT: case KW_TRACE:
+	case KW_CHR: case KW_CONCAT: case KW_STR: case KW_STRLWR: case KW_STRUPR: case KW_SUBSTR:
+	case KW_VSTR: case KW_DATETIME: case KW_NOW:
+		return true;
+	default:
+		return false;
+	}
+}
+
+struct value builtin_call(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	enum kw k = (enum kw)t->kw;
+	struct srcpos at = t->pos;
+	const char *name = kw_names[k];
+	parse_advance(p);
+	if (k == KW_NOW) {
+		/* Days since 2000-01-01 00:00:00 UTC. */
+		return val_float(((double)time(NULL) - 946684800.0) / 86400.0, at);
+	}
+	lparen(p);
+	struct value r;
+	const struct math_fn *m = math_fn(k);
+	if (m) {
+		double a = arg_float(p, name), b = 0;
+		if (m->nargs == 2) {
+			comma(p);
+			b = arg_float(p, name);
+		}
+		rparen(p);
+		double x = m->nargs == 1 ? m->f1(a) : m->f2(a, b);
+		if (!isfinite(x))
+			parse_error_at(p, at, "%s(): the result is not a finite number (is the argument out of range?)", name);
+		return val_float(x, at);
+	}
+	switch (k) {
+	case KW_MIN: case KW_MAX: case KW_BITWISE_AND: case KW_BITWISE_OR: case KW_BITWISE_XOR: {
+		double acc = arg_float(p, name);
+		int n = 1;
+		while (parse_accept(p, TOK_COMMA)) {
+			double x = arg_float(p, name);
+			n++;
+			switch (k) {
+			case KW_MIN: acc = x < acc ? x : acc; break;
+			case KW_MAX: acc = x > acc ? x : acc; break;
+			case KW_BITWISE_AND: acc = (double)((int64_t)acc & (int64_t)x); break;
+			case KW_BITWISE_OR: acc = (double)((int64_t)acc | (int64_t)x); break;
+			default: acc = (double)((int64_t)acc ^ (int64_t)x); break;
+			}
+		}
+		rparen(p);
+		if (n < 2 && (k == KW_MIN || k == KW_MAX))
+			parse_error_at(p, at, "%s() needs at least two arguments", name);
+		return val_float(acc, at);
+	}
+	case KW_SELECT: {
+		double c = arg_float(p, name);
+		comma(p);
+		struct value a = arg(p);
+		comma(p);
+		struct value b = arg(p);
+		bool four = parse_accept(p, TOK_COMMA);
+		struct value d = {0};
+		if (four)
+			d = arg(p);
+		rparen(p);
+		if (c < 0)
+			r = a;
+		else if (!four || c == 0)
+			r = b;
+		else
+			r = d;
+		return r;
+	}
+	case KW_SEED: r = val_float(f_seed(p, arg_float(p, name)), at); break;
+	case KW_RAND: r = val_float(f_rand(p, arg_float(p, name), at), at); break;
+	case KW_STRCMP: {
+		const char *a = arg_string(p, name);
+		comma(p);
+		const char *b = arg_string(p, name);
+		int c = strcmp(a, b);
+		r = val_float(c < 0 ? -1 : c > 0 ? 1 : 0, at);
+		break;
+	}
+	case KW_STRLEN: r = val_float((double)strlen(arg_string(p, name)), at); break;
+	case KW_VAL: r = val_float(strtod(arg_string(p, name), NULL), at); break;
+	case KW_ASC: r = val_float((unsigned char)arg_string(p, name)[0], at); break;
+	case KW_VDOT: {
+		vec3 a = arg_vec3(p, name);
+		comma(p);
+		r = val_float(v3_dot(a, arg_vec3(p, name)), at);
+		break;
+	}
+	case KW_VLENGTH: {
+		struct value v = arg(p);
+		parse_need_numeric(p, &v, name);
+		double s = 0;
+		for (int i = 0; i < v.n; i++)
+			s += v.v[i] * v.v[i];
+		r = val_float(sqrt(s), at);
+		break;
+	}
+	case KW_DEFINED: {
+		const struct token *id = parse_peek(p);
+		bool def = id->kind == TOK_IDENT && parse_lookup(p, id->str) != NULL;
+		if (id->kind != TOK_IDENT && id->kind != TOK_KEYWORD)
+			parse_expected(p, "an identifier");
+		parse_advance(p);
+		r = val_float(def, at);
+		break;
+	}
+	case KW_DIMENSIONS: r = val_float(arg_ident(p, VAL_ARRAY, name)->arr->ndims, at); break;
+	case KW_DIMENSION_SIZE: {
+		const struct array *a = arg_ident(p, VAL_ARRAY, name)->arr;
+		comma(p);
+		double d = arg_float(p, name);
+		int i = (int)d;
+		r = val_float(i >= 1 && i <= a->ndims ? a->dims[i - 1] : 0, at);
+		break;
+	}
+	case KW_FILE_EXISTS: {
+		const char *f = arg_string(p, name);
+		bool ok = access(f, R_OK) == 0;
+		char buf[4096];
+		for (size_t i = 0; !ok && i < p->o->nlib_paths; i++) {
+			snprintf(buf, sizeof buf, "%s/%s", p->o->lib_paths[i], f);
+			ok = access(buf, R_OK) == 0;
+		}
+		r = val_float(ok, at);
+		break;
+	}
+	case KW_INSIDE: {
+		const struct value *o = arg_ident(p, VAL_OBJECT, name);
+		comma(p);
+		r = val_float(object_inside(o->obj, arg_vec3(p, name)), at);
+		break;
+	}
+	case KW_VCROSS: {
+		vec3 a = arg_vec3(p, name);
+		comma(p);
+		r = vec3_value(v3_cross(a, arg_vec3(p, name)), at);
+		break;
+	}
+	case KW_VNORMALIZE: {
+		vec3 a = arg_vec3(p, name);
+		if (v3_len(a) == 0)
+			parse_error_at(p, at, "vnormalize() of a zero-length vector");
+		r = vec3_value(v3_norm(a), at);
+		break;
+	}
+	case KW_VROTATE: {
+		vec3 a = arg_vec3(p, name);
+		comma(p);
+		struct xform x = xform_rotate(arg_vec3(p, name));
+		r = vec3_value(mat_point(&x.fwd, a), at);
+		break;
+	}
+	case KW_VAXIS_ROTATE: {
+		vec3 a = arg_vec3(p, name);
+		comma(p);
+		vec3 axis = v3_norm(arg_vec3(p, name));
+		comma(p);
+		double ang = arg_float(p, name) * M_PI / 180.0;
+		/* Rodrigues' rotation, turning the same way as rotate does. */
+		double c = cos(ang), s = sin(ang);
+		vec3 out = v3_add(v3_add(v3_scale(a, c), v3_scale(v3_cross(axis, a), s)),
+		                  v3_scale(axis, v3_dot(axis, a) * (1 - c)));
+		r = vec3_value(out, at);
+		break;
+	}
+	case KW_MIN_EXTENT: case KW_MAX_EXTENT: {
+		const struct value *o = arg_ident(p, VAL_OBJECT, name);
+		struct aabb b = object_world_bounds(o->obj);
+		vec3 e = k == KW_MIN_EXTENT ? b.lo : b.hi;
+		/* POV-Ray reports an unbounded object's box as +-1e10. */
+		e = v3(fmax(fmin(e.x, 1e10), -1e10), fmax(fmin(e.y, 1e10), -1e10), fmax(fmin(e.z, 1e10), -1e10));
+		r = vec3_value(e, at);
+		break;
+	}
+	case KW_TRACE: return f_trace(p, at);
+	case KW_CHR: {
+		double c = arg_float(p, name);
+		char ch = (char)(int)c;
+		r = str_value(p, &ch, 1, at);
+		break;
+	}
+	case KW_CONCAT: {
+		size_t cap = 256, len = 0;
+		char *buf = malloc(cap);
+		if (!buf) abort();
+		do {
+			const char *s = arg_string(p, name);
+			size_t n = strlen(s);
+			if (len + n + 1 > cap) {
+				while (len + n + 1 > cap)
+					cap *= 2;
+				buf = realloc(buf, cap);
+				if (!buf) abort();
+			}
+			memcpy(buf + len, s, n);
+			len += n;
+		} while (parse_accept(p, TOK_COMMA));
+		r = str_value(p, buf, len, at);
+		free(buf);
+		break;
+	}
+	case KW_STR: {
+		double x = arg_float(p, name);
+		comma(p);
+		double l = arg_float(p, name);
+		comma(p);
+		double pr = arg_float(p, name);
+		r = (struct value){.kind = VAL_STRING, .pos = at, .str = parse_format_float(p, x, (int)l, (int)pr)};
+		break;
+	}
+	case KW_STRLWR: case KW_STRUPR: {
+		const char *s = arg_string(p, name);
+		size_t n = strlen(s);
+		char *buf = malloc(n + 1);
+		if (!buf) abort();
+		for (size_t i = 0; i < n; i++)
+			buf[i] = (char)(k == KW_STRLWR ? tolower((unsigned char)s[i]) : toupper((unsigned char)s[i]));
+		r = str_value(p, buf, n, at);
+		free(buf);
+		break;
+	}
+	case KW_SUBSTR: {
+		const char *s = arg_string(p, name);
+		comma(p);
+		double start = arg_float(p, name);
+		comma(p);
+		double len = arg_float(p, name);
+		size_t n = strlen(s);
+		long st = (long)start, ln = (long)len;
+		if (st < 1 || ln < 0 || (size_t)(st + ln - 1) > n)
+			parse_error_at(p, at, "substr(\"%s\", %ld, %ld) reaches past the end of the string (length %zu)", s, st, ln, n);
+		r = str_value(p, s + st - 1, (size_t)ln, at);
+		break;
+	}
+	case KW_VSTR: {
+		double nd = arg_float(p, name);
+		comma(p);
+		struct value v = arg(p);
+		parse_need_numeric(p, &v, name);
+		comma(p);
+		const char *sep = arg_string(p, name);
+		comma(p);
+		double l = arg_float(p, name);
+		comma(p);
+		double pr = arg_float(p, name);
+		int n = (int)nd;
+		if (n < 2) n = 2;
+		if (n > 5) n = 5;
+		if (v.kind != VAL_FLOAT && v.n > n)
+			parse_error_at(p, v.pos, "vstr(): the vector has %d components, more than %d", v.n, n);
+		/* A float is a vector with only its first component set here
+		 * (POV-Ray's behaviour, whatever its manual says). */
+		for (int i = v.n; i < n; i++)
+			v.v[i] = 0;
+		size_t cap = 64, len = 0;
+		char *buf = malloc(cap);
+		if (!buf) abort();
+		for (int i = 0; i < n; i++) {
+			const char *part = parse_format_float(p, v.v[i], (int)l, (int)pr);
+			size_t need = strlen(part) + (i ? strlen(sep) : 0);
+			while (len + need + 1 > cap) {
+				cap *= 2;
+				buf = realloc(buf, cap);
+				if (!buf) abort();
+			}
+			if (i) {
+				memcpy(buf + len, sep, strlen(sep));
+				len += strlen(sep);
+			}
+			memcpy(buf + len, part, strlen(part));
+			len += strlen(part);
+		}
+		r = str_value(p, buf, len, at);
+		free(buf);
+		break;
+	}
+	case KW_DATETIME: {
+		double days = arg_float(p, name);
+		const char *fmt = "%Y-%m-%d %H:%M:%SZ";
+		if (parse_accept(p, TOK_COMMA))
+			fmt = arg_string(p, name);
+		time_t tt = (time_t)(days * 86400.0 + 946684800.0);
+		struct tm tmv;
+		gmtime_r(&tt, &tmv);
+		char buf[512];
+		size_t n = strftime(buf, sizeof buf, fmt, &tmv);
+		r = str_value(p, buf, n, at);
+		break;
+	}
+	default:
+		parse_error_at(p, at, "'%s' is not a function", name);
+	}
+	rparen(p);
+	return r;
+}

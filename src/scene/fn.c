@@ -1,0 +1,111 @@
+/* fn.c: the user-function stack machine (see fn.h). */
+#include "scene/fn.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+struct fn *fn_new(int nparams)
+{
+	struct fn *f = calloc(1, sizeof *f);
+	if (!f) abort();
+	f->refs = 1;
+	f->nparams = nparams;
+	return f;
+}
+
+struct fn *fn_ref(struct fn *f)
+{
+	if (f)
+		f->refs++;
+	return f;
+}
+
+void fn_unref(struct fn *f)
+{
+	if (!f || --f->refs > 0)
+		return;
+	for (int i = 0; i < f->ncallees; i++)
+		fn_unref(f->callees[i]);
+	free(f->callees);
+	free(f->code);
+	free(f);
+}
+
+int fn_emit(struct fn *f, struct fn_instr in)
+{
+	if (f->ncode == f->cap) {
+		f->cap = f->cap ? f->cap * 2 : 16;
+		f->code = realloc(f->code, (size_t)f->cap * sizeof *f->code);
+		if (!f->code) abort();
+	}
+	f->code[f->ncode] = in;
+	return f->ncode++;
+}
+
+double fn_eval(const struct fn *f, const double *args)
+{
+	double st[FN_MAX_STACK];
+	int sp = 0;
+	const struct fn_instr *code = f->code;
+	for (int pc = 0; pc < f->ncode; pc++) {
+		const struct fn_instr *in = &code[pc];
+		switch ((enum fn_op)in->op) {
+		case FN_CONST: st[sp++] = in->k; break;
+		case FN_ARG: st[sp++] = args[in->i]; break;
+		case FN_ADD: sp--; st[sp - 1] += st[sp]; break;
+		case FN_SUB: sp--; st[sp - 1] -= st[sp]; break;
+		case FN_MUL: sp--; st[sp - 1] *= st[sp]; break;
+		case FN_DIV: sp--; st[sp - 1] /= st[sp]; break;
+		case FN_NEG: st[sp - 1] = -st[sp - 1]; break;
+		case FN_NOT: st[sp - 1] = st[sp - 1] == 0; break;
+		case FN_LT: sp--; st[sp - 1] = st[sp - 1] < st[sp]; break;
+		case FN_LE: sp--; st[sp - 1] = st[sp - 1] <= st[sp]; break;
+		case FN_EQ: sp--; st[sp - 1] = st[sp - 1] == st[sp]; break;
+		case FN_GE: sp--; st[sp - 1] = st[sp - 1] >= st[sp]; break;
+		case FN_GT: sp--; st[sp - 1] = st[sp - 1] > st[sp]; break;
+		case FN_NE: sp--; st[sp - 1] = st[sp - 1] != st[sp]; break;
+		case FN_AND: sp--; st[sp - 1] = st[sp - 1] != 0 && st[sp] != 0; break;
+		case FN_OR: sp--; st[sp - 1] = st[sp - 1] != 0 || st[sp] != 0; break;
+		case FN_CALL1: st[sp - 1] = in->f1(st[sp - 1]); break;
+		case FN_CALL2: sp--; st[sp - 1] = in->f2(st[sp - 1], st[sp]); break;
+		case FN_MIN:
+		case FN_MAX: {
+			int n = in->i;
+			double r = st[sp - n];
+			for (int i = sp - n + 1; i < sp; i++)
+				r = in->op == FN_MIN ? fmin(r, st[i]) : fmax(r, st[i]);
+			sp -= n;
+			st[sp++] = r;
+			break;
+		}
+		case FN_SELECT: {
+			int n = in->i;
+			double *a = &st[sp - n];
+			double r = a[0] < 0 ? a[1] : (n == 3 || a[0] == 0) ? a[2] : a[3];
+			sp -= n;
+			st[sp++] = r;
+			break;
+		}
+		case FN_USER: {
+			int n = in->i;
+			sp -= n;
+			st[sp] = fn_eval(in->fn, &st[sp]);
+			sp++;
+			break;
+		}
+		case FN_INTERNAL: {
+			int n = in->i;
+			sp -= n;
+			st[sp] = fn_internal((int)in->k, &st[sp], n);
+			sp++;
+			break;
+		}
+		case FN_JZ:
+			if (st[--sp] == 0)
+				pc = in->i - 1;
+			break;
+		case FN_JMP: pc = in->i - 1; break;
+		}
+	}
+	return sp > 0 ? st[sp - 1] : 0;
+}

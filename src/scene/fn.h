@@ -1,0 +1,64 @@
+/* fn.h: compiled user functions (`function { ... }`) and the small stack
+ * machine that evaluates them. The front end compiles; isosurfaces,
+ * patterns and the parser's own calls evaluate, millions of times, with no
+ * allocation. */
+#ifndef LUCENT_FN_H
+#define LUCENT_FN_H
+
+#include <stdint.h>
+
+enum fn_op {
+	FN_CONST,    /* push k */
+	FN_ARG,      /* push args[i] */
+	FN_ADD, FN_SUB, FN_MUL, FN_DIV, FN_NEG, FN_NOT,
+	FN_LT, FN_LE, FN_EQ, FN_GE, FN_GT, FN_NE, FN_AND, FN_OR,
+	FN_CALL1,    /* replace top with f1(top) */
+	FN_CALL2,    /* pop b, a; push f2(a, b) */
+	FN_MIN,      /* pop i values, push the least */
+	FN_MAX,
+	FN_SELECT,   /* pop i (3 or 4) values: select(a, b, c [, d]) */
+	FN_USER,     /* pop i values, push fn(values) */
+	FN_INTERNAL, /* pop i values, push internal function #k(values) */
+	FN_JZ,       /* pop; if zero, jump to instruction i */
+	FN_JMP,      /* jump to instruction i */
+};
+
+struct fn;
+
+struct fn_instr {
+	uint8_t op;
+	int32_t i;                   /* argument index, count or jump target */
+	double k;                    /* constant */
+	union {
+		double (*f1)(double);
+		double (*f2)(double, double);
+		const struct fn *fn;     /* FN_USER: a reference held by the owner */
+	};
+};
+
+enum { FN_MAX_PARAMS = 32, FN_MAX_STACK = 256 };
+
+struct fn {
+	int refs;
+	int nparams;
+	struct fn_instr *code;
+	int ncode, cap;
+	int depth;                   /* the deepest stack the code reaches */
+	struct fn **callees;         /* functions it calls, one reference each */
+	int ncallees;
+};
+
+struct fn *fn_new(int nparams);
+struct fn *fn_ref(struct fn *f);
+void fn_unref(struct fn *f);
+/* Append an instruction; returns its index. */
+int fn_emit(struct fn *f, struct fn_instr in);
+/* Evaluate f with args[0..nparams). */
+double fn_eval(const struct fn *f, const double *args);
+/* An internal function of POV-Ray's numbering (function { internal(N) }):
+ * its value at args (nargs values), or NaN if N is unknown. */
+double fn_internal(int n, const double *args, int nargs);
+/* How many parameters internal function N takes, or -1 if there is none. */
+int fn_internal_params(int n);
+
+#endif
