@@ -179,7 +179,7 @@ static void dir_else(struct parser *p, struct srcpos at, enum kw k)
 static bool case_matches(struct parser *p, enum kw k, double v)
 {
 	if (k == KW_CASE)
-		return v == paren_float(p);
+		return fabs(v - paren_float(p)) < 1e-10;
 	parse_expect(p, TOK_LPAREN);
 	double lo = parse_float(p);
 	parse_expect(p, TOK_COMMA);
@@ -254,13 +254,13 @@ static void dir_while(struct parser *p, struct srcpos at, size_t hash)
 	}
 }
 
-/* Assign a float the way #declare does. */
+/* Assign a #for loop variable: like #local, so a loop in a macro does
+ * not leak its variable (POV-Ray's behaviour). */
 static void declare_float(struct parser *p, const char *name, double x)
 {
 	struct value v = {.kind = VAL_FLOAT, .n = 1};
 	v.v[0] = x;
-	struct symtab *t = parse_declare_table(p, &name);
-	sym_set(t, name, v);
+	sym_set(parse_local_table(p), name, v);
 }
 
 static bool for_continues(double i, double end, double step)
@@ -651,14 +651,52 @@ static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 {
 	const char *text = parse_string(p);
 	if (which == KW_DEBUG) {
-		FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
-		fputs(text, out);
-		fflush(out);
+		parse_debug_write(p, text);
 	} else if (which == KW_WARNING) {
 		parse_warning_at(p, at, "%s", text);
 	} else {
 		parse_error_at(p, at, "#error: %s", text);
 	}
+}
+
+void parse_debug_write(struct parser *p, const char *text)
+{
+	FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
+	enum { WIDTH = (int)sizeof p->debug_line };
+	for (const char *c = text; *c; c++) {
+		if (*c == '\n') {
+			fwrite(p->debug_line, 1, (size_t)p->debug_len, out);
+			fputc('\n', out);
+			p->debug_len = 0;
+			continue;
+		}
+		if (p->debug_len == WIDTH) {
+			/* Break before the last space if there is one (the space
+			 * starts the next line), else after 80 characters. */
+			int cut = WIDTH;
+			for (int i = WIDTH - 1; i > 0; i--)
+				if (p->debug_line[i] == ' ') {
+					cut = i;
+					break;
+				}
+			fwrite(p->debug_line, 1, (size_t)cut, out);
+			fputc('\n', out);
+			memmove(p->debug_line, p->debug_line + cut, (size_t)(WIDTH - cut));
+			p->debug_len = WIDTH - cut;
+		}
+		p->debug_line[p->debug_len++] = *c;
+	}
+	fflush(out);
+}
+
+void parse_debug_flush(struct parser *p)
+{
+	FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
+	if (p->debug_len > 0) {
+		fwrite(p->debug_line, 1, (size_t)p->debug_len, out);
+		p->debug_len = 0;
+	}
+	fflush(out);
 }
 
 /* #version FLOAT ; */

@@ -39,7 +39,8 @@ enum op { OP_NONE, OP_OR, OP_AND, OP_LT, OP_LE, OP_EQ, OP_GE, OP_GT, OP_NE, OP_A
 static const struct {
 	int prec;       /* binding strength: higher binds tighter */
 } ops[] = {
-	[OP_NONE] = {0}, [OP_OR] = {1}, [OP_AND] = {2},
+	/* & and | share one level, left to right, as in POV-Ray. */
+	[OP_NONE] = {0}, [OP_OR] = {2}, [OP_AND] = {2},
 	[OP_LT] = {3}, [OP_LE] = {3}, [OP_EQ] = {3}, [OP_GE] = {3}, [OP_GT] = {3}, [OP_NE] = {3},
 	[OP_ADD] = {4}, [OP_SUB] = {4}, [OP_MUL] = {5}, [OP_DIV] = {5},
 };
@@ -64,34 +65,54 @@ static enum op binop(enum tok_kind k, bool in_vector)
 	}
 }
 
+/* POV-Ray's tolerance for equality and truth: values within 1e-10 of
+ * each other are equal, and within 1e-10 of zero are false. */
+#define EQ_EPSILON 1e-10
+static bool truthy(double x) { return fabs(x) > EQ_EPSILON; }
+
+static double compare(enum op op, double x, double y)
+{
+	switch (op) {
+	case OP_OR: return truthy(x) || truthy(y);
+	case OP_AND: return truthy(x) && truthy(y);
+	case OP_LT: return x < y;
+	case OP_LE: return x <= y;
+	case OP_EQ: return fabs(x - y) < EQ_EPSILON;
+	case OP_GE: return x >= y;
+	case OP_GT: return x > y;
+	case OP_NE: return !(fabs(x - y) < EQ_EPSILON);
+	default: return 0;
+	}
+}
+
+static const char *op_name(enum op op)
+{
+	static const char *const names[] = {"?", "'|'", "'&'", "'<'", "'<='", "'='", "'>='", "'>'", "'!='", "'+'", "'-'", "'*'", "'/'"};
+	return names[op];
+}
+
 static struct value apply(struct parser *p, enum op op, struct value a, struct value b, struct srcpos at)
 {
-	const char *name = op == OP_ADD ? "'+'" : op == OP_SUB ? "'-'" : op == OP_MUL ? "'*'" : op == OP_DIV ? "'/'" : "a comparison";
-	need_numeric(p, &a, name);
-	need_numeric(p, &b, name);
-	if (op <= OP_NE) {
-		if (a.kind != VAL_FLOAT || b.kind != VAL_FLOAT)
-			parse_error_at(p, at, "%s compares floats, not a %s with a %s", op == OP_AND ? "'&'" : op == OP_OR ? "'|'" : "a comparison",
-			               val_kind_name(a.kind), val_kind_name(b.kind));
-		double x = a.v[0], y = b.v[0], r = 0;
-		switch (op) {
-		case OP_OR: r = (x != 0) || (y != 0); break;
-		case OP_AND: r = (x != 0) && (y != 0); break;
-		case OP_LT: r = x < y; break;
-		case OP_LE: r = x <= y; break;
-		case OP_EQ: r = x == y; break;
-		case OP_GE: r = x >= y; break;
-		case OP_GT: r = x > y; break;
-		case OP_NE: r = x != y; break;
-		default: break;
-		}
-		return val_float(r, a.pos);
+	if (op >= OP_LT && op <= OP_NE && a.kind == VAL_STRING && b.kind == VAL_STRING) {
+		int c = strcmp(a.str, b.str);
+		return val_float(compare(op, c, 0), a.pos);
+	}
+	if (!val_is_numeric(&a) || !val_is_numeric(&b)) {
+		const struct value *bad = val_is_numeric(&a) ? &b : &a;
+		parse_error_at(p, at, "%s needs numbers, vectors or colors%s, not a %s", op_name(op),
+		               op >= OP_LT && op <= OP_NE ? " (or two strings)" : "", val_kind_name(bad->kind));
 	}
 	int n = a.n > b.n ? a.n : b.n;
 	val_widen(&a, n);
 	val_widen(&b, n);
 	struct value r = a;
 	r.kind = (a.kind == VAL_COLOR || b.kind == VAL_COLOR) ? VAL_COLOR : n > 1 ? VAL_VECTOR : VAL_FLOAT;
+	if (op <= OP_NE) {
+		/* Comparisons and logic work component by component. */
+		for (int i = 0; i < n; i++)
+			r.v[i] = compare(op, a.v[i], b.v[i]);
+		return r;
+	}
 	for (int i = 0; i < n; i++) {
 		switch (op) {
 		case OP_ADD: r.v[i] = a.v[i] + b.v[i]; break;
@@ -134,6 +155,7 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 	struct value c = parse_binary(p, 1, in_vector);
 	if (parse_peek_cont(p)->kind == TOK_QUESTION) {
 		need_float(p, &c, "the condition of '?:'");
+		c.v[0] = truthy(c.v[0]);
 		parse_advance(p);
 		struct value a = parse_cond(p, in_vector);
 		parse_expect(p, TOK_COLON);
@@ -248,7 +270,12 @@ static struct value parse_color_body(struct parser *p, struct srcpos at)
 	} else {
 		c = parse_binary(p, 1, false);
 		need_numeric(p, &c, "a color");
-		if (c.kind != VAL_COLOR) {
+		if (c.kind == VAL_FLOAT) {
+			/* A bare float sets all five components (the manual's
+			 * pitfall: filter and transmit too). */
+			double z[5] = {c.v[0], c.v[0], c.v[0], c.v[0], c.v[0]};
+			c = val_vector(5, z, VAL_COLOR, at);
+		} else if (c.kind != VAL_COLOR) {
 			val_widen(&c, 3);
 			double z[5] = {c.v[0], c.v[1], c.v[2], c.n > 3 ? c.v[3] : 0, c.n > 4 ? c.v[4] : 0};
 			c = val_vector(5, z, VAL_COLOR, at);
@@ -304,7 +331,7 @@ static struct value parse_keyword_primary(struct parser *p)
 	case KW_CLOCK_ON: parse_advance(p); return val_float(0, at);
 	case KW_FRAME_NUMBER: case KW_INITIAL_FRAME: case KW_FINAL_FRAME:
 		parse_advance(p);
-		return val_float(k == KW_FINAL_FRAME ? 1 : k == KW_INITIAL_FRAME ? 1 : 0, at);
+		return val_float(0, at); /* no animation */
 	case KW_INITIAL_CLOCK: parse_advance(p); return val_float(0, at);
 	case KW_FINAL_CLOCK: parse_advance(p); return val_float(1, at);
 	case KW_IMAGE_WIDTH: parse_advance(p); return val_float(p->o->image_width, at);
@@ -490,10 +517,9 @@ static struct value parse_unary(struct parser *p)
 		if (k == TOK_MINUS)
 			for (int i = 0; i < v.n; i++)
 				v.v[i] = -v.v[i];
-		if (k == TOK_BANG) {
-			need_float(p, &v, "'!'");
-			v.v[0] = v.v[0] == 0;
-		}
+		if (k == TOK_BANG)
+			for (int i = 0; i < v.n; i++)
+				v.v[i] = !truthy(v.v[i]);
 		v.pos = at;
 		return v;
 	}

@@ -432,6 +432,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	} else {
 		rc = 1;
 	}
+	parse_debug_flush(p);
 	/* Both paths: free what the parse still owns. */
 	for (int i = p->nowned - 1; i >= 0; i--)
 		if (p->owned[i].ptr)
@@ -439,6 +440,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	for (int i = p->nframes - 1; i >= 0; i--)
 		sym_free(p->frames[i].locals);
 	sym_free(p->globals);
+	free(p->rng);
 	texture_unref(p->default_tex);
 	d->context = NULL;
 	d->context_arg = NULL;

@@ -72,6 +72,8 @@ struct parser {
 	double version;
 	int expr_depth;
 
+	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */
+	int debug_len;               /* its stream at 80 columns */
 	uint32_t *rng;               /* rand() streams made by seed() */
 	int nrng, caprng;
 
@@ -164,6 +166,12 @@ struct value parse_call_function(struct parser *p, const struct fn *f, struct sr
 /* Splines (func.c): `spline { ... }` and evaluating S(t). */
 struct spline *parse_spline(struct parser *p);
 struct value spline_eval(const struct spline *s, double t, struct srcpos at);
+
+/* Write #debug text, wrapping lines at 80 columns as POV-Ray does
+ * (at the last space when there is one); parse_debug_flush writes what is
+ * left at the end. */
+void parse_debug_write(struct parser *p, const char *text);
+void parse_debug_flush(struct parser *p);
 
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
