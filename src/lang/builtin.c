@@ -64,27 +64,59 @@ static struct value vec3_value(vec3 r, struct srcpos at)
 	return val_vector(3, c, VAL_VECTOR, at);
 }
 
-/* An identifier argument naming a value of kind k (dimensions(A) ...). */
-static const struct value *arg_ident(struct parser *p, enum val_kind k, const char *fn)
+/* An argument of kind k (an array for dimensions(), an object for
+ * inside() ...). The result is held by the parse: release it with
+ * parse_drop. */
+static struct value arg_item(struct parser *p, enum val_kind k, const char *fn)
 {
-	const struct token *t = parse_peek(p);
-	if (t->kind != TOK_IDENT)
-		parse_expected(p, k == VAL_ARRAY ? "an array identifier" : "an object identifier");
-	const struct value *v = parse_lookup(p, t->str);
-	if (!v)
-		parse_undefined(p, t->str);
-	if (v->kind != k)
-		parse_error(p, "%s needs %s, but '%s' is a %s", fn, k == VAL_ARRAY ? "an array" : "an object",
-		            t->str, val_kind_name(v->kind));
-	parse_advance(p);
+	struct srcpos at = parse_peek(p)->pos;
+	struct value v = arg(p);
+	if (v.kind != k) {
+		const char *kind = val_kind_name(v.kind);
+		parse_drop(p, &v);
+		parse_error_at(p, at, "%s needs %s, not a %s", fn, k == VAL_ARRAY ? "an array" : "an object", kind);
+	}
 	return v;
+}
+
+bool parse_defined(struct parser *p)
+{
+	const struct token *id = parse_peek(p);
+	if (id->kind == TOK_KEYWORD) {
+		parse_advance(p);
+		return false; /* a reserved word is never declared */
+	}
+	if (id->kind != TOK_IDENT)
+		parse_expected(p, "an identifier");
+	const char *name = id->str;
+	struct srcpos at = id->pos;
+	const struct value *v = parse_lookup(p, name);
+	parse_advance(p);
+	if (!v || v->kind != VAL_ARRAY || !parse_is(p, TOK_LBRACKET))
+		return v != NULL;
+	/* A[i]...: is that element set? */
+	const struct array *a = v->arr;
+	size_t idx = 0;
+	for (int d = 0; d < a->ndims && parse_accept(p, TOK_LBRACKET); d++) {
+		struct value e = parse_expression(p);
+		parse_need_float(p, &e, "an array index");
+		double i = trunc(e.v[0]);
+		if (i < 0 || i >= a->dims[d])
+			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
+			               i, d + 1, name, a->dims[d]);
+		parse_expect(p, TOK_RBRACKET);
+		idx = idx * (size_t)a->dims[d] + (size_t)i;
+	}
+	(void)at;
+	v = parse_lookup(p, name);
+	return v && v->kind == VAL_ARRAY && idx < v->arr->count && v->arr->elems[idx].kind != VAL_NONE;
 }
 
 /* ---- float functions of one or two floats ---- */
 
 static double f_degrees(double a) { return a * 180.0 / M_PI; }
 static double f_radians(double a) { return a * M_PI / 180.0; }
-static double f_int(double a) { return trunc(a); }
+static double f_int(double a) { return trunc(a) + 0.0; /* never -0 */ }
 static double f_mod(double a, double b) { return fmod(a, b); }
 static double f_div(double a, double b) { return trunc(a / b); }
 
@@ -159,7 +191,7 @@ static double f_rand(struct parser *p, double stream, struct srcpos at)
 
 static struct value f_trace(struct parser *p, struct srcpos at)
 {
-	const struct value *o = arg_ident(p, VAL_OBJECT, "trace");
+	struct value o = arg_item(p, VAL_OBJECT, "trace");
 	comma(p);
 	vec3 from = arg_vec3(p, "trace");
 	comma(p);
@@ -176,17 +208,15 @@ static struct value f_trace(struct parser *p, struct srcpos at)
 	struct ray r = {from, dir};
 	struct hit h;
 	vec3 pt = v3(0, 0, 0), n = v3(0, 0, 0);
-	if (v3_len(dir) > 0 && object_intersect(o->obj, &r, 0, INFINITY, &h)) {
+	if (v3_len(dir) > 0 && object_intersect(o.obj, &r, 0, INFINITY, &h)) {
 		pt = v3_madd(from, dir, h.t);
-		n = object_normal(o->obj, pt, &h);
+		n = object_normal(o.obj, pt, &h);
 		if (v3_dot(n, dir) > 0)
 			n = v3_neg(n);
 	}
-	if (normal_var) {
-		const char *name = normal_var;
-		struct symtab *t = parse_declare_table(p, &name);
-		sym_set(t, name, vec3_value(n, at));
-	}
+	parse_drop(p, &o);
+	if (normal_var)
+		parse_assign(p, normal_var, false, vec3_value(n, at));
 	return vec3_value(pt, at);
 }
 
@@ -303,22 +333,20 @@ struct value builtin_call(struct parser *p)
 		r = val_float(sqrt(s), at);
 		break;
 	}
-	case KW_DEFINED: {
-		const struct token *id = parse_peek(p);
-		bool def = id->kind == TOK_IDENT && parse_lookup(p, id->str) != NULL;
-		if (id->kind != TOK_IDENT && id->kind != TOK_KEYWORD)
-			parse_expected(p, "an identifier");
-		parse_advance(p);
-		r = val_float(def, at);
+	case KW_DEFINED: r = val_float(parse_defined(p), at); break;
+	case KW_DIMENSIONS: {
+		struct value a = arg_item(p, VAL_ARRAY, name);
+		r = val_float(a.arr->ndims, at);
+		parse_drop(p, &a);
 		break;
 	}
-	case KW_DIMENSIONS: r = val_float(arg_ident(p, VAL_ARRAY, name)->arr->ndims, at); break;
 	case KW_DIMENSION_SIZE: {
-		const struct array *a = arg_ident(p, VAL_ARRAY, name)->arr;
+		struct value a = arg_item(p, VAL_ARRAY, name);
 		comma(p);
 		double d = arg_float(p, name);
 		int i = (int)d;
-		r = val_float(i >= 1 && i <= a->ndims ? a->dims[i - 1] : 0, at);
+		r = val_float(i >= 1 && i <= a.arr->ndims ? a.arr->dims[i - 1] : 0, at);
+		parse_drop(p, &a);
 		break;
 	}
 	case KW_FILE_EXISTS: {
@@ -333,9 +361,10 @@ struct value builtin_call(struct parser *p)
 		break;
 	}
 	case KW_INSIDE: {
-		const struct value *o = arg_ident(p, VAL_OBJECT, name);
+		struct value o = arg_item(p, VAL_OBJECT, name);
 		comma(p);
-		r = val_float(object_inside(o->obj, arg_vec3(p, name)), at);
+		r = val_float(object_inside(o.obj, arg_vec3(p, name)), at);
+		parse_drop(p, &o);
 		break;
 	}
 	case KW_VCROSS: {
@@ -372,8 +401,9 @@ struct value builtin_call(struct parser *p)
 		break;
 	}
 	case KW_MIN_EXTENT: case KW_MAX_EXTENT: {
-		const struct value *o = arg_ident(p, VAL_OBJECT, name);
-		struct aabb b = object_world_bounds(o->obj);
+		struct value o = arg_item(p, VAL_OBJECT, name);
+		struct aabb b = object_world_bounds(o.obj);
+		parse_drop(p, &o);
 		vec3 e = k == KW_MIN_EXTENT ? b.lo : b.hi;
 		/* POV-Ray reports an unbounded object's box as +-1e10. */
 		e = v3(fmax(fmin(e.x, 1e10), -1e10), fmax(fmin(e.y, 1e10), -1e10), fmax(fmin(e.z, 1e10), -1e10));
@@ -454,7 +484,7 @@ struct value builtin_call(struct parser *p)
 		int n = (int)nd;
 		if (n < 2) n = 2;
 		if (n > 5) n = 5;
-		if (v.kind != VAL_FLOAT && v.n > n)
+		if (v.kind == VAL_VECTOR && v.n > n)
 			parse_error_at(p, v.pos, "vstr(): the vector has %d components, more than %d", v.n, n);
 		/* A float is a vector with only its first component set here
 		 * (POV-Ray's behaviour, whatever its manual says). */

@@ -145,15 +145,17 @@ static void dir_if(struct parser *p, struct srcpos at)
 static void dir_ifdef(struct parser *p, struct srcpos at, bool want)
 {
 	raw_expect(p, TOK_LPAREN, "'(' after #ifdef");
-	struct token t = parse_raw(p);
+	/* The identifier itself is read raw: naming a macro must not call it. */
+	const struct frame *f = top(p);
+	const struct token *t = f->pos < f->end ? &f->toks[f->pos] : NULL;
 	bool defined;
-	if (t.kind == TOK_IDENT)
-		defined = parse_lookup(p, t.str) != NULL;
-	else if (t.kind == TOK_KEYWORD)
-		defined = false; /* a reserved word is never a declared identifier */
-	else
-		raw_expected(p, &t, "an identifier");
-	raw_expect(p, TOK_RPAREN, "')'");
+	if (t && t->kind == TOK_IDENT && f->pos + 1 < f->end && f->toks[f->pos + 1].kind == TOK_RPAREN) {
+		defined = parse_lookup(p, t->str) != NULL;
+		top(p)->pos++;
+	} else {
+		defined = parse_defined(p);
+	}
+	parse_expect(p, TOK_RPAREN);
 	push_cond(p, COND_IF, at);
 	if (defined != want)
 		skip_false_branch(p, at);
@@ -234,8 +236,15 @@ static void dir_break(struct parser *p, struct srcpos at)
 	int i = p->nconds - 1;
 	while (i >= 0 && p->conds[i].frame == p->nframes - 1 && p->conds[i].kind == COND_IF)
 		i--;
-	if (i < 0 || p->conds[i].frame != p->nframes - 1)
-		parse_error_at(p, at, "#break outside a #switch, #while or #for");
+	if (i < 0 || p->conds[i].frame != p->nframes - 1) {
+		/* Outside any loop or switch, #break ends the macro it is in. */
+		struct frame *f = top(p);
+		if (f->kind != FRAME_MACRO)
+			parse_error_at(p, at, "#break outside a #switch, #while, #for or macro");
+		p->nconds = f->nconds;
+		f->pos = f->end;
+		return;
+	}
 	int inner = p->nconds - 1 - i;
 	struct srcpos open = p->conds[i].pos;
 	p->nconds = i;
@@ -260,7 +269,7 @@ static void declare_float(struct parser *p, const char *name, double x)
 {
 	struct value v = {.kind = VAL_FLOAT, .n = 1};
 	v.v[0] = x;
-	sym_set(parse_local_table(p), name, v);
+	parse_assign(p, name, true, v);
 }
 
 static bool for_continues(double i, double end, double step)
@@ -387,6 +396,53 @@ static void dir_macro(struct parser *p, struct srcpos at)
 
 enum { MAX_MACRO_ARGS = 256 };
 
+/* If the raw tokens at f->pos are IDENT or IDENT[...]... followed by ','
+ * or ')', the index of that ',' or ')'; else 0. */
+static size_t byref_end(const struct frame *f)
+{
+	size_t i = f->pos;
+	if (i >= f->end || f->toks[i].kind != TOK_IDENT)
+		return 0;
+	i++;
+	while (i < f->end && f->toks[i].kind == TOK_LBRACKET) {
+		int depth = 0;
+		for (; i < f->end; i++) {
+			if (f->toks[i].kind == TOK_LBRACKET)
+				depth++;
+			else if (f->toks[i].kind == TOK_RBRACKET && --depth == 0)
+				break;
+		}
+		if (i >= f->end)
+			return 0;
+		i++;
+	}
+	if (i < f->end && (f->toks[i].kind == TOK_COMMA || f->toks[i].kind == TOK_RPAREN))
+		return i;
+	return 0;
+}
+
+/* '[' INT ']' for each dimension of a: the flat index of the element. */
+static size_t array_index(struct parser *p, const struct array *a, const char *name, struct srcpos at)
+{
+	int ndims = a->ndims, dims[ARRAY_MAX_DIMS];
+	memcpy(dims, a->dims, sizeof dims);
+	size_t idx = 0;
+	for (int d = 0; d < ndims; d++) {
+		if (!parse_is(p, TOK_LBRACKET))
+			parse_error_at(p, at, "array '%s' has %d dimensions: give an index for each", name, ndims);
+		parse_advance(p);
+		struct value e = parse_expression(p);
+		parse_need_float(p, &e, "an array index");
+		double i = trunc(e.v[0]);
+		if (i < 0 || i >= dims[d])
+			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
+			               i, d + 1, name, dims[d]);
+		parse_expect(p, TOK_RBRACKET);
+		idx = idx * (size_t)dims[d] + (size_t)i;
+	}
+	return idx;
+}
+
 void parse_call_macro(struct parser *p, const struct token *name, struct macro *m)
 {
 	struct token lp = parse_raw(p);
@@ -404,31 +460,31 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			const struct token *a = &f->toks[f->pos];
 			struct value v;
 			memset(&v, 0, sizeof v);
-			/* A lone identifier is passed by reference: #declare of the
-			 * parameter inside the macro changes the caller's variable. */
+			/* A lone identifier, or an array element A[i], is passed by
+			 * reference: assigning the parameter inside the macro
+			 * changes the caller's variable. */
 			bool byref = false;
-			if (a->kind == TOK_IDENT && f->pos + 1 < f->end &&
-			    (f->toks[f->pos + 1].kind == TOK_COMMA || f->toks[f->pos + 1].kind == TOK_RPAREN)) {
+			size_t after = byref_end(f);
+			if (after) {
 				const char *target = a->str;
 				struct value *b = parse_lookup(p, target);
-				if (b && b->kind != VAL_MACRO) {
-					struct symtab *t = parse_declare_table(p, &target);
+				if (b && b->kind != VAL_MACRO && (after == f->pos + 1 || b->kind == VAL_ARRAY)) {
+					struct srcpos apos = a->pos;
+					f->pos++;
+					struct symtab *t = parse_alias_target(p, &target);
+					size_t idx = ALIAS_WHOLE;
+					if (after != f->pos)
+						idx = array_index(p, b->arr, target, apos);
 					v.kind = VAL_ALIAS;
 					v.alias.table = t;
 					v.alias.name = target;
-					v.pos = a->pos;
+					v.alias.index = idx;
+					v.pos = apos;
 					byref = true;
-					f->pos++;
 				}
 			}
-			if (!byref) {
-				if (!parse_item_value(p, &v)) {
-					if (!parse_starts_expression(p))
-						parse_expected(p, "a macro argument");
-					v = parse_expression(p);
-				}
-				parse_take(p, &v);
-			}
+			if (!byref)
+				v = parse_rvalue(p);
 			if (n < m->nparams)
 				sym_set(locals, m->params[n], v);
 			else
@@ -436,12 +492,6 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			n++;
 			if (n > MAX_MACRO_ARGS)
 				parse_error_at(p, name->pos, "more than %d arguments in a macro call", MAX_MACRO_ARGS);
-			if (byref) {
-				struct token d = parse_raw(p);
-				if (d.kind == TOK_RPAREN)
-					break;
-				continue; /* the comma */
-			}
 			if (parse_accept(p, TOK_COMMA))
 				continue;
 			if (parse_accept(p, TOK_RPAREN))
@@ -502,78 +552,76 @@ static void run_closing_directives(struct parser *p)
 	}
 }
 
-/* IDENT '[' INT ']' ... '=' value : assign one element of an array. */
-static void declare_element(struct parser *p, struct symtab *t, const char *name, struct srcpos at)
+/* The semicolon after a declaration: required after floats, vectors and
+ * colors since 3.7. */
+static void end_declaration(struct parser *p, bool numeric, const char *what)
 {
-	struct value *av = sym_get(t, name);
-	if (!av)
-		parse_error_at(p, at, "'%s' is not declared, so it has no elements to assign", name);
-	if (av->kind != VAL_ARRAY)
-		parse_error_at(p, at, "'%s' is a %s, not an array", name, val_kind_name(av->kind));
-	size_t idx = 0;
-	const struct array *a = av->arr;
-	for (int d = 0; d < a->ndims; d++) {
-		parse_expect(p, TOK_LBRACKET);
-		struct value e = parse_expression(p);
-		parse_need_float(p, &e, "an array index");
-		double i = trunc(e.v[0]);
-		if (i < 0 || i >= a->dims[d])
-			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
-			               i, d + 1, name, a->dims[d]);
-		parse_expect(p, TOK_RBRACKET);
-		idx = idx * (size_t)a->dims[d] + (size_t)i;
-	}
-	parse_expect(p, TOK_EQ);
-	struct value v = parse_rvalue(p);
-	bool numeric = val_is_numeric(&v);
-	/* Look the array up again: reading the value may have run code. */
-	av = sym_get(t, name);
-	if (!av || av->kind != VAL_ARRAY) {
-		val_clear(&v);
-		parse_error_at(p, at, "array '%s' was changed while its element was being assigned", name);
-	}
-	struct array *w = array_unshare(av);
-	if (idx >= w->count) {
-		val_clear(&v);
-		parse_error_at(p, at, "array '%s' was resized while its element was being assigned", name);
-	}
-	val_clear(&w->elems[idx]);
-	w->elems[idx] = v;
 	run_closing_directives(p);
 	if (parse_peek_cont(p)->kind == TOK_SEMI)
 		parse_advance(p);
 	else if (numeric && p->version >= 3.7)
-		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s[...]': POV-Ray 3.7 needs it for floats, vectors and colors", name);
+		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray 3.7 needs it for floats, vectors and colors", what);
 }
 
-/* #declare IDENT = value [;]  /  #local IDENT = value [;] */
+/* IDENT '[' INT ']' ... '=' value : assign one element of an array. */
+static void declare_element(struct parser *p, const char *name, bool local, struct srcpos at)
+{
+	const struct value *av = parse_lookup(p, name);
+	if (!av)
+		parse_error_at(p, at, "'%s' is not declared, so it has no elements to assign", name);
+	if (av->kind != VAL_ARRAY)
+		parse_error_at(p, at, "'%s' is a %s, not an array", name, val_kind_name(av->kind));
+	size_t idx = array_index(p, av->arr, name, at);
+	parse_expect(p, TOK_EQ);
+	struct value v = parse_rvalue(p);
+	bool numeric = val_is_numeric(&v);
+	/* Find the array again: reading the value may have run code. */
+	struct value *slot = parse_assign_slot(p, name, local);
+	if (slot->kind != VAL_ARRAY || idx >= slot->arr->count) {
+		val_clear(&v);
+		parse_error_at(p, at, "array '%s' was changed while its element was being assigned", name);
+	}
+	struct array *w = array_unshare(slot);
+	val_clear(&w->elems[idx]);
+	w->elems[idx] = v;
+	end_declaration(p, numeric, name);
+}
+
+/* #declare [deprecated [once] [STRING]] IDENT ['[' INT ']'...] = value [;]
+ * and the same with #local. */
 static void dir_declare(struct parser *p, bool local)
 {
 	struct token id = parse_raw(p);
+	const char *deprecated = NULL;
+	bool once = false;
+	if (id.kind == TOK_KEYWORD && id.kw == KW_DEPRECATED) {
+		deprecated = "";
+		id = parse_raw(p);
+		if (id.kind == TOK_KEYWORD && id.kw == KW_ONCE) {
+			once = true;
+			id = parse_raw(p);
+		}
+		if (id.kind == TOK_STRING) {
+			deprecated = id.str;
+			id = parse_raw(p);
+		}
+	}
 	if (id.kind == TOK_KEYWORD)
 		parse_error_at(p, id.pos, "'%s' is a reserved word and cannot be declared", kw_names[id.kw]);
 	if (id.kind != TOK_IDENT)
 		raw_expected(p, &id, "an identifier to declare");
-	const char *name = id.str;
-	struct symtab *t = local ? parse_local_table(p) : parse_declare_table(p, &name);
 	if (parse_is(p, TOK_LBRACKET)) {
-		declare_element(p, t, name, id.pos);
+		declare_element(p, id.str, local, id.pos);
 		return;
 	}
 	parse_expect(p, TOK_EQ);
 	struct value v = parse_rvalue(p);
 	v.pos = id.pos;
+	v.deprecated = deprecated;
+	v.deprecated_once = once;
 	bool numeric = val_is_numeric(&v);
-	/* The table may have changed while the value was read (a macro call
-	 * in it); look again. */
-	name = id.str;
-	t = local ? parse_local_table(p) : parse_declare_table(p, &name);
-	sym_set(t, name, v);
-	run_closing_directives(p);
-	if (parse_peek_cont(p)->kind == TOK_SEMI)
-		parse_advance(p);
-	else if (numeric && p->version >= 3.7)
-		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray 3.7 needs it for floats, vectors and colors", id.str);
+	parse_assign(p, id.str, local, v);
+	end_declaration(p, numeric, id.str);
 }
 
 /* #undef IDENT: removes the innermost binding. */

@@ -222,6 +222,25 @@ static double srgb_decode(double v)
 	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
 }
 
+static int color_component(enum kw k);
+
+/* Trailing 'red F', 'transmit F' ... that set one component of c. */
+static void color_components(struct parser *p, struct value *c)
+{
+	for (;;) {
+		const struct token *t = parse_peek_cont(p);
+		if (t->kind != TOK_KEYWORD)
+			return;
+		int i = color_component((enum kw)t->kw);
+		if (i < 0)
+			return;
+		parse_advance(p);
+		struct value e = parse_binary(p, 4, false);
+		need_float(p, &e, "a color component");
+		c->v[i] = e.v[0];
+	}
+}
+
 /* rgb/rgbf/rgbt/rgbft/srgb... VECTOR: a colour from a vector expression. */
 static struct value parse_color_keyword(struct parser *p, enum kw k)
 {
@@ -243,7 +262,9 @@ static struct value parse_color_keyword(struct parser *p, enum kw k)
 	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
 		for (int i = 0; i < 3; i++)
 			c[i] = srgb_decode(c[i]);
-	return val_vector(5, c, VAL_COLOR, at);
+	struct value r = val_vector(5, c, VAL_COLOR, at);
+	color_components(p, &r);
+	return r;
 }
 
 static int color_component(enum kw k)
@@ -281,18 +302,7 @@ static struct value parse_color_body(struct parser *p, struct srcpos at)
 			c = val_vector(5, z, VAL_COLOR, at);
 		}
 	}
-	for (;;) {
-		t = parse_peek(p);
-		if (t->kind != TOK_KEYWORD)
-			break;
-		int i = color_component((enum kw)t->kw);
-		if (i < 0)
-			break;
-		parse_advance(p);
-		struct value e = parse_binary(p, 4, false);
-		need_float(p, &e, "a color component");
-		c.v[i] = e.v[0];
-	}
+	color_components(p, &c);
 	return c;
 }
 
@@ -333,7 +343,7 @@ static struct value parse_keyword_primary(struct parser *p)
 		parse_advance(p);
 		return val_float(0, at); /* no animation */
 	case KW_INITIAL_CLOCK: parse_advance(p); return val_float(0, at);
-	case KW_FINAL_CLOCK: parse_advance(p); return val_float(1, at);
+	case KW_FINAL_CLOCK: parse_advance(p); return val_float(0, at);
 	case KW_IMAGE_WIDTH: parse_advance(p); return val_float(p->o->image_width, at);
 	case KW_IMAGE_HEIGHT: parse_advance(p); return val_float(p->o->image_height, at);
 	case KW_VERSION: parse_advance(p); return val_float(p->version, at);
@@ -451,8 +461,17 @@ static struct value parse_primary(struct parser *p)
 				parse_advance(p);
 				struct value tv = parse_expression(p);
 				need_float(p, &tv, "a spline's parameter");
+				int kind = -1;
+				if (parse_accept(p, TOK_COMMA)) {
+					static const enum kw kinds[] = {KW_LINEAR_SPLINE, KW_QUADRATIC_SPLINE, KW_CUBIC_SPLINE, KW_NATURAL_SPLINE};
+					for (int i = 0; i < 4 && kind < 0; i++)
+						if (parse_accept_kw(p, kinds[i]))
+							kind = i;
+					if (kind < 0)
+						parse_expected(p, "a spline type");
+				}
 				parse_expect(p, TOK_RPAREN);
-				r = spline_eval(c.spl, tv.v[0], at);
+				r = spline_eval_as(c.spl, tv.v[0], kind, at);
 			}
 			parse_drop(p, &c);
 			return r;

@@ -44,18 +44,31 @@ static int param_index(struct fcomp *c, const char *name)
 	return -1;
 }
 
-/* x y z u v in a function body: its parameters by position when the
- * function has the default (x, y, z), or by name otherwise. */
+static int coord_param_named(struct fcomp *c, const char *name)
+{
+	for (int i = 0; i < c->f->nparams; i++)
+		if (c->params[i] && strcmp(c->params[i], name) == 0)
+			return i;
+	return -1;
+}
+
+/* x y z u v in a function body: the parameter of that name (u is x and v
+ * is y); -1 if there is none. */
 static int coord_param(struct fcomp *c, enum kw k)
 {
 	const char *name = kw_names[k];
 	for (int i = 0; i < c->f->nparams; i++)
 		if (c->params[i] && strcmp(c->params[i], name) == 0)
 			return i;
-	if (k == KW_U) return coord_param(c, KW_X);
-	if (k == KW_V) return coord_param(c, KW_Y);
+	/* u and v are other names of x and y, both ways. */
+	if (k == KW_U) return coord_param_named(c, "x");
+	if (k == KW_V) return coord_param_named(c, "y");
+	if (k == KW_X) return coord_param_named(c, "u");
+	if (k == KW_Y) return coord_param_named(c, "v");
 	return -1;
 }
+
+static double fdiv(double a, double b) { return trunc(a / b); }
 
 static const struct {
 	enum kw kw;
@@ -67,7 +80,7 @@ static const struct {
 	{KW_COS, cos, NULL}, {KW_COSH, cosh, NULL}, {KW_EXP, exp, NULL}, {KW_FLOOR, floor, NULL},
 	{KW_INT, trunc, NULL}, {KW_LN, log, NULL}, {KW_LOG, log10, NULL}, {KW_SIN, sin, NULL},
 	{KW_SINH, sinh, NULL}, {KW_SQRT, sqrt, NULL}, {KW_TAN, tan, NULL}, {KW_TANH, tanh, NULL},
-	{KW_ATAN2, NULL, atan2}, {KW_MOD, NULL, fmod}, {KW_POW, NULL, pow},
+	{KW_ATAN2, NULL, atan2}, {KW_MOD, NULL, fmod}, {KW_POW, NULL, pow}, {KW_DIV, NULL, fdiv},
 };
 
 static double fdeg(double a) { return a * 180.0 / M_PI; }
@@ -148,10 +161,14 @@ static void c_primary(struct fcomp *c)
 	}
 	case TOK_KEYWORD: {
 		enum kw k = (enum kw)t->kw;
-		int cp = coord_param(c, k);
-		if (cp >= 0) {
+		if (k == KW_X || k == KW_Y || k == KW_Z || k == KW_U || k == KW_V) {
+			int cp = coord_param(c, k);
 			parse_advance(p);
-			emit(c, FN_ARG, cp, 0, 1);
+			/* A coordinate the function has no parameter for is 0. */
+			if (cp >= 0)
+				emit(c, FN_ARG, cp, 0, 1);
+			else
+				emit(c, FN_CONST, 0, 0, 1);
 			return;
 		}
 		double kval;
@@ -488,6 +505,20 @@ static double lagrange(const struct spline *s, int i0, int k, double t, int c)
 				w *= (t - s->t[m]) / (s->t[j] - s->t[m]);
 		r += w * s->v[j * 5 + c];
 	}
+	return r;
+}
+
+struct value spline_eval_as(const struct spline *s, double t, int kind, struct srcpos at)
+{
+	if (kind < 0 || (enum spline_kind)kind == s->kind)
+		return spline_eval(s, t, at);
+	struct spline tmp = *s;
+	tmp.kind = (enum spline_kind)kind;
+	tmp.d2 = NULL;
+	if (tmp.kind == SPLINE_NATURAL)
+		natural_prepare(&tmp);
+	struct value r = spline_eval(&tmp, t, at);
+	free(tmp.d2);
 	return r;
 }
 

@@ -170,6 +170,33 @@ static bool lex_string(struct lexer *lx)
 			case '\\': c = '\\'; break;
 			case '\'': c = '\''; break;
 			case '"': c = '"'; break;
+			case 'u': {
+				/* \uNNNN: a character by its code; codes up to 255 are one
+				 * byte (so asc() and strlen() count characters), others
+				 * are written as UTF-8. */
+				unsigned code = 0;
+				int k;
+				for (k = 0; k < 4 && lx->i < lx->n && isxdigit((unsigned char)lx->s[lx->i]); k++) {
+					char h = lx->s[lx->i++];
+					code = code * 16 + (unsigned)(isdigit((unsigned char)h) ? h - '0' : (tolower((unsigned char)h) - 'a' + 10));
+				}
+				if (k != 4) {
+					diag_report(lx->d, DIAG_ERROR, epos, "'\\u' needs four hexadecimal digits");
+					return false;
+				}
+				if (code < 256) {
+					c = (char)code;
+				} else {
+					if (code < 0x800) {
+						sput(lx, &len, (char)(0xc0 | (code >> 6)));
+					} else {
+						sput(lx, &len, (char)(0xe0 | (code >> 12)));
+						sput(lx, &len, (char)(0x80 | ((code >> 6) & 0x3f)));
+					}
+					c = (char)(0x80 | (code & 0x3f));
+				}
+				break;
+			}
 			default:
 				diag_report(lx->d, DIAG_ERROR, epos, "unknown escape sequence '\\%c' in string", e);
 				return false;

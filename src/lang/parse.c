@@ -298,27 +298,83 @@ static struct value *find_binding(struct parser *p, const char *name, struct sym
 	return sym_get(p->globals, name);
 }
 
+/* The binding an alias names (an array element for A[i] passed by
+ * reference); NULL if it no longer exists. With `write`, the array is
+ * unshared first and a missing whole binding is created. */
+static struct value *follow_alias(struct value *v, bool write)
+{
+	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++) {
+		struct alias a = v->alias;
+		v = sym_get(a.table, a.name);
+		if (!v && write && a.index == ALIAS_WHOLE) {
+			sym_set(a.table, a.name, (struct value){.kind = VAL_NONE});
+			v = sym_get(a.table, a.name);
+		}
+		if (v && a.index != ALIAS_WHOLE) {
+			if (v->kind != VAL_ARRAY || a.index >= v->arr->count)
+				return NULL;
+			struct array *arr = write ? array_unshare(v) : v->arr;
+			v = &arr->elems[a.index];
+		}
+	}
+	return v;
+}
+
 struct value *parse_lookup(struct parser *p, const char *name)
 {
 	struct symtab *t;
 	struct value *v = find_binding(p, name, &t);
 	/* A by-reference parameter names its caller's binding; chains of them
 	 * (a parameter passed on) are short, and end. */
-	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++)
-		v = sym_get(v->alias.table, v->alias.name);
+	v = follow_alias(v, false);
+	return v && v->kind != VAL_NONE ? v : NULL;
+}
+
+struct value *parse_assign_slot(struct parser *p, const char *name, bool local)
+{
+	struct symtab *t;
+	struct value *v;
+	if (local) {
+		t = parse_local_table(p);
+		v = sym_get(t, name);
+	} else {
+		v = find_binding(p, name, &t);
+		if (!v)
+			t = p->globals;
+	}
+	if (!v) {
+		sym_set(t, name, (struct value){.kind = VAL_NONE});
+		return sym_get(t, name);
+	}
+	/* Through a by-reference parameter, #declare and #local both write
+	 * the caller's variable (POV-Ray's behaviour). */
+	if (v->kind == VAL_ALIAS) {
+		struct value *target = follow_alias(v, true);
+		if (target)
+			return target;
+		sym_set(t, name, (struct value){.kind = VAL_NONE});
+		return sym_get(t, name);
+	}
 	return v;
 }
 
-struct symtab *parse_declare_table(struct parser *p, const char **name)
+void parse_assign(struct parser *p, const char *name, bool local, struct value v)
+{
+	struct value *slot = parse_assign_slot(p, name, local);
+	val_clear(slot);
+	*slot = v;
+}
+
+struct symtab *parse_alias_target(struct parser *p, const char **name)
 {
 	struct symtab *t;
 	struct value *v = find_binding(p, *name, &t);
-	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++) {
+	for (int hops = 0; v && v->kind == VAL_ALIAS && v->alias.index == ALIAS_WHOLE && hops < MAX_FRAMES; hops++) {
 		t = v->alias.table;
 		*name = v->alias.name;
 		v = sym_get(t, *name);
 	}
-	return v ? t : p->globals;
+	return t;
 }
 
 struct suggest {

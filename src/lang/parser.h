@@ -113,9 +113,15 @@ void parse_release(struct parser *p, int slot);
 _Noreturn void parse_undefined(struct parser *p, const char *name);
 /* Symbols: the innermost binding of name (aliases followed), or NULL. */
 struct value *parse_lookup(struct parser *p, const char *name);
-/* The table where #declare NAME would store: the one holding the innermost
- * existing binding (through a by-reference alias), else the globals. */
-struct symtab *parse_declare_table(struct parser *p, const char **name);
+/* The value slot #declare NAME (local: #local NAME) assigns: the
+ * innermost existing binding, through by-reference parameters, else a new
+ * one (global for #declare, at the current level for #local). */
+struct value *parse_assign_slot(struct parser *p, const char *name, bool local);
+/* Assign v (taking it) as #declare / #local does. */
+void parse_assign(struct parser *p, const char *name, bool local, struct value v);
+/* The table holding the binding that NAME refers to for a by-reference
+ * parameter (aliases followed); *name becomes the name there. */
+struct symtab *parse_alias_target(struct parser *p, const char **name);
 /* The innermost #local table (the globals in the main file). */
 struct symtab *parse_local_table(struct parser *p);
 
@@ -151,6 +157,9 @@ int parse_number_list(struct parser *p, double *out, int max);
 /* Built-in functions (builtin.c): is k one, and call it (the current
  * token is its name). */
 bool builtin_is_function(enum kw k);
+/* IDENT or IDENT[i]...: is it declared (the element set)? Reads the
+ * identifier and its indices. */
+bool parse_defined(struct parser *p);
 struct value builtin_call(struct parser *p);
 /* Typed operands for built-ins and statements. */
 void parse_need_float(struct parser *p, const struct value *v, const char *what);
@@ -166,6 +175,8 @@ struct value parse_call_function(struct parser *p, const struct fn *f, struct sr
 /* Splines (func.c): `spline { ... }` and evaluating S(t). */
 struct spline *parse_spline(struct parser *p);
 struct value spline_eval(const struct spline *s, double t, struct srcpos at);
+/* Evaluate as another spline type (enum spline_kind), or its own if < 0. */
+struct value spline_eval_as(const struct spline *s, double t, int kind, struct srcpos at);
 
 /* Write #debug text, wrapping lines at 80 columns as POV-Ray does
  * (at the last space when there is one); parse_debug_flush writes what is

@@ -89,12 +89,16 @@ struct sdl_file {
 struct alias {
 	struct symtab *table;
 	const char *name;
+	size_t index;      /* an element of the array `name`, or ALIAS_WHOLE */
 };
+#define ALIAS_WHOLE ((size_t)-1)
 struct value {
 	enum val_kind kind;
 	int n;                 /* components for FLOAT (1), VECTOR, COLOR (5) */
 	int owner;             /* > 0: held in the parser's ownership slot owner-1
 	                        * while an expression is being evaluated */
+	const char *deprecated; /* #declare deprecated: the warning to give on use */
+	bool deprecated_once;  /* warn only the first time */
 	struct srcpos pos;
 	union {
 		double v[5];
