@@ -75,12 +75,13 @@ static double compare(enum op op, double x, double y)
 	switch (op) {
 	case OP_OR: return truthy(x) || truthy(y);
 	case OP_AND: return truthy(x) && truthy(y);
+	/* < and > are exact; the others allow the tolerance. */
 	case OP_LT: return x < y;
-	case OP_LE: return x <= y;
-	case OP_EQ: return fabs(x - y) < EQ_EPSILON;
-	case OP_GE: return x >= y;
+	case OP_LE: return x <= y + EQ_EPSILON;
+	case OP_EQ: return fabs(x - y) <= EQ_EPSILON;
+	case OP_GE: return x >= y - EQ_EPSILON;
 	case OP_GT: return x > y;
-	case OP_NE: return !(fabs(x - y) < EQ_EPSILON);
+	case OP_NE: return fabs(x - y) > EQ_EPSILON;
 	default: return 0;
 	}
 }

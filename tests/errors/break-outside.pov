@@ -1,2 +1,2 @@
-// expect: 2:1: #break outside a #switch, #while or #for
+// expect: 2:1: #break outside a #switch, #while, #for or macro
 #break
