@@ -188,6 +188,7 @@ int main(int argc, char **argv)
 		.image_height = opt.height,
 		.clock = opt.clock,
 		.debug_out = debug_out,
+		.io_unrestricted = opt.io_unrestricted,
 	};
 	double t0 = now();
 	int prc = parse_scene(sm, &diag, &po, scene);

@@ -58,6 +58,7 @@ void options_usage(FILE *out)
 "  file.ini       read switches and Key=Value options from an .ini file\n"
 "\n"
 "  -q, --quiet    print only #debug/#warning text and errors\n"
+"  --io-unrestricted  let #fopen use absolute paths and '..'\n"
 "  --threads N    as +WTN\n"
 "  --output FILE  as +OFILE\n"
 "  -h, --help     show this help\n"
@@ -470,6 +471,10 @@ int options_parse(struct options *o, int argc, char **argv, FILE *err)
 		}
 		if (strcmp(a, "--version") == 0) {
 			o->version = true;
+			continue;
+		}
+		if (strcmp(a, "--io-unrestricted") == 0) {
+			o->io_unrestricted = true;
 			continue;
 		}
 		if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {

@@ -25,6 +25,7 @@ struct options {
 	int verbose;            /* +V: 1 */
 	bool quiet;             /* -q: only #debug/#warning text and errors */
 	char *debug_file;       /* +GDfile: #debug text goes to this file */
+	bool io_unrestricted;   /* --io-unrestricted: #fopen may use any path */
 	struct parse_define *defines;
 	size_t ndefines;
 	double start_row, end_row, start_col, end_col; /* as given; < 0: unset */

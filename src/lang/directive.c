@@ -792,6 +792,11 @@ void parse_directive(struct parser *p, size_t hash)
 	case KW_FOR: dir_for(p, at); break;
 	case KW_END: dir_end(p, at); break;
 	case KW_MACRO: dir_macro(p, at); break;
+	case KW_FOPEN: parse_fopen(p, at); break;
+	case KW_FCLOSE: parse_fclose(p); break;
+	case KW_READ: parse_read(p, at); break;
+	case KW_WRITE: parse_write(p); break;
+	case KW_DEFAULT: parse_default(p); break;
 	default:
 		parse_error_at(p, kwt.pos, "unknown directive '#%s'", kw_names[kwt.kw]);
 	}

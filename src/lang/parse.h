@@ -25,6 +25,7 @@ struct parse_opts {
 	int image_width, image_height;  /* for the built-in identifiers */
 	double clock;
 	FILE *debug_out;                /* where #debug text goes */
+	bool io_unrestricted;           /* #fopen may reach any path */
 };
 
 /* Parse o->input into s. Returns 0 on success, 1 after reporting an error

@@ -184,6 +184,15 @@ struct value spline_eval_as(const struct spline *s, double t, int kind, struct s
 void parse_debug_write(struct parser *p, const char *text);
 void parse_debug_flush(struct parser *p);
 
+/* #default { ... } (stmt.c). */
+void parse_default(struct parser *p);
+
+/* File directives (fileio.c); the current token follows the keyword. */
+void parse_fopen(struct parser *p, struct srcpos at);
+void parse_fclose(struct parser *p);
+void parse_read(struct parser *p, struct srcpos at);
+void parse_write(struct parser *p);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an

@@ -464,6 +464,25 @@ static void parse_background(struct parser *p)
 	parse_expect(p, TOK_RBRACE);
 }
 
+/* ---- #default ---- */
+
+/* #default '{' { texture | pigment | finish } '}' : what objects without
+ * their own get from now on. */
+void parse_default(struct parser *p)
+{
+	parse_expect(p, TOK_LBRACE);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		if (parse_is_kw(p, KW_TEXTURE))
+			parse_texture(p, &p->default_tex);
+		else if (parse_is_kw(p, KW_PIGMENT))
+			parse_pigment(p, &private_texture(p, &p->default_tex)->pigment);
+		else if (parse_is_kw(p, KW_FINISH))
+			parse_finish(p, &private_texture(p, &p->default_tex)->finish);
+		else
+			parse_expected(p, "texture, pigment, finish or '}' in #default");
+	}
+}
+
 /* ---- arrays ---- */
 
 static void free_array_holder(void *h)

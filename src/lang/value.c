@@ -139,8 +139,6 @@ void sdl_file_unref(struct sdl_file *f)
 	if (f && --f->refs == 0) {
 		if (f->fp)
 			fclose(f->fp);
-		free(f->toks);
-		free(f->text);
 		free(f);
 	}
 }

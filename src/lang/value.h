@@ -80,9 +80,9 @@ struct sdl_file {
 	FILE *fp;
 	bool writing;
 	const char *name;        /* interned, as written in #fopen */
-	struct token *toks;      /* reading: the file lexed, with its position */
+	const struct token *toks; /* reading: the file lexed, with its position */
 	size_t ntoks, pos;
-	char *text;
+	bool borrowed_toks;       /* the tokens belong to the source manager */
 };
 
 /* Where a by-reference parameter's value really lives. */

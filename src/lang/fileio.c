@@ -1,0 +1,288 @@
+/* fileio.c: #fopen, #read, #write and #fclose. A file opened for reading
+ * is lexed whole with the scene's own lexer, and #read takes its items
+ * (numbers, vectors, strings) token by token; at the end of the file the
+ * file's identifier becomes undefined, as in POV-Ray. */
+#include "lang/parser.h"
+
+#include "lang/intern.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void free_file_holder(void *h)
+{
+	val_clear(h);
+	free(h);
+}
+
+/* Is name a path #fopen may use? Relative paths inside the scene's
+ * folder tree; '..' and absolute paths only when the user allowed it. */
+static void check_path(struct parser *p, const char *name, struct srcpos at, bool writing)
+{
+	if (p->o->io_unrestricted)
+		return;
+	bool bad = name[0] == '/';
+	for (const char *s = name; !bad && (s = strstr(s, "..")) != NULL; s += 2) {
+		bool start = s == name || s[-1] == '/';
+		bool end = s[2] == 0 || s[2] == '/';
+		if (start && end)
+			bad = true;
+	}
+	if (bad)
+		parse_error_at(p, at, "#fopen may not %s \"%s\": scene files can only reach their own folder "
+		               "(lucent --io-unrestricted lifts this)", writing ? "write" : "read", name);
+}
+
+/* The path of a file named in the scene: beside the scene file. */
+static char *scene_relative(struct parser *p, const char *name)
+{
+	const struct srcfile *main_file = src_file(p->sm, p->frames[0].file);
+	const char *slash = main_file ? strrchr(main_file->path, '/') : NULL;
+	if (name[0] == '/' || !slash) {
+		char *c = strdup(name);
+		if (!c) abort();
+		return c;
+	}
+	size_t dl = (size_t)(slash - main_file->path);
+	char *c = malloc(dl + strlen(name) + 2);
+	if (!c) abort();
+	sprintf(c, "%.*s/%s", (int)dl, main_file->path, name);
+	return c;
+}
+
+/* #fopen IDENT STRING (read | write | append) */
+void parse_fopen(struct parser *p, struct srcpos at)
+{
+	struct token id = parse_raw(p);
+	if (id.kind != TOK_IDENT)
+		parse_error_at(p, id.pos, "expected a file identifier after #fopen");
+	const char *name = parse_string(p);
+	bool writing, append = false;
+	if (parse_accept_kw(p, KW_READ))
+		writing = false;
+	else if (parse_accept_kw(p, KW_WRITE))
+		writing = true;
+	else if (parse_accept_kw(p, KW_APPEND))
+		writing = append = true;
+	else
+		parse_expected(p, "read, write or append");
+	check_path(p, name, at, writing);
+	char *path = scene_relative(p, name);
+	struct value *h = calloc(1, sizeof *h);
+	if (!h) abort();
+	h->kind = VAL_FILE;
+	h->file = calloc(1, sizeof *h->file);
+	if (!h->file) abort();
+	h->file->refs = 1;
+	h->file->name = name;
+	h->file->writing = writing;
+	int slot = parse_own(p, h, free_file_holder);
+	if (writing) {
+		h->file->fp = fopen(path, append ? "ab" : "wb");
+		if (!h->file->fp) {
+			int e = errno;
+			free(path);
+			parse_error_at(p, at, "cannot open \"%s\" for writing: %s", name, strerror(e));
+		}
+	} else {
+		uint32_t file = src_load(p->sm, path);
+		if (!file) {
+			int e = errno;
+			free(path);
+			parse_error_at(p, at, "cannot open \"%s\" for reading: %s", name, strerror(e));
+		}
+		if (!lex_file(p->sm, file, p->d)) {
+			free(path);
+			longjmp(*p->boundary, 1);
+		}
+		const struct srcfile *sf = src_file(p->sm, file);
+		h->file->toks = sf->toks; /* owned by the source manager */
+		h->file->ntoks = sf->ntoks;
+		h->file->borrowed_toks = true;
+	}
+	free(path);
+	struct value v = *h;
+	parse_release(p, slot);
+	free(h);
+	v.pos = id.pos;
+	parse_assign(p, id.str, false, v);
+}
+
+/* #fclose IDENT */
+void parse_fclose(struct parser *p)
+{
+	struct token id = parse_raw(p);
+	if (id.kind != TOK_IDENT)
+		parse_error_at(p, id.pos, "expected a file identifier after #fclose");
+	struct value *v = parse_lookup(p, id.str);
+	if (!v)
+		return; /* closing a file that reached its end is allowed */
+	if (v->kind != VAL_FILE)
+		parse_error_at(p, id.pos, "'%s' is a %s, not a file", id.str, val_kind_name(v->kind));
+	if (v->file->fp) {
+		fclose(v->file->fp);
+		v->file->fp = NULL;
+	}
+	for (int i = p->nframes - 1; i >= 0; i--)
+		if (p->frames[i].locals && sym_remove(p->frames[i].locals, id.str))
+			return;
+	sym_remove(p->globals, id.str);
+}
+
+static struct sdl_file *file_arg(struct parser *p, bool writing)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_IDENT)
+		parse_expected(p, "a file identifier");
+	struct value *v = parse_lookup(p, t->str);
+	if (!v)
+		parse_error(p, "the file '%s' is not open (or was read to its end)", t->str);
+	if (v->kind != VAL_FILE)
+		parse_error(p, "'%s' is a %s, not a file", t->str, val_kind_name(v->kind));
+	if (v->file->writing != writing)
+		parse_error(p, "the file '%s' was opened for %s", t->str, v->file->writing ? "writing" : "reading");
+	parse_advance(p);
+	return v->file;
+}
+
+/* One number with an optional sign from a file's tokens. */
+static bool read_number(struct sdl_file *f, double *out)
+{
+	double sign = 1;
+	size_t i = f->pos;
+	while (i < f->ntoks && (f->toks[i].kind == TOK_MINUS || f->toks[i].kind == TOK_PLUS)) {
+		if (f->toks[i].kind == TOK_MINUS)
+			sign = -sign;
+		i++;
+	}
+	if (i >= f->ntoks || f->toks[i].kind != TOK_NUMBER)
+		return false;
+	*out = sign * f->toks[i].num;
+	f->pos = i + 1;
+	return true;
+}
+
+/* #read ( IDENT , VAR {, VAR} ) */
+void parse_read(struct parser *p, struct srcpos at)
+{
+	parse_expect(p, TOK_LPAREN);
+	const char *fname = parse_peek(p)->kind == TOK_IDENT ? parse_peek(p)->str : NULL;
+	struct sdl_file *f = file_arg(p, false);
+	while (parse_accept(p, TOK_COMMA)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_IDENT)
+			parse_expected(p, "an identifier to read into");
+		const char *var = t->str;
+		parse_advance(p);
+		while (f->pos < f->ntoks && f->toks[f->pos].kind == TOK_COMMA)
+			f->pos++;
+		if (f->pos >= f->ntoks || f->toks[f->pos].kind == TOK_EOF) {
+			/* The end: the file's identifier goes away. */
+			while (!parse_accept(p, TOK_RPAREN)) {
+				parse_advance(p);
+			}
+			struct value *fv = parse_lookup(p, fname);
+			if (fv && fv->kind == VAL_FILE) {
+				for (int i = p->nframes - 1; i >= 0; i--)
+					if (p->frames[i].locals && sym_remove(p->frames[i].locals, fname))
+						return;
+				sym_remove(p->globals, fname);
+			}
+			return;
+		}
+		const struct token *it = &f->toks[f->pos];
+		struct value v;
+		double x;
+		if (it->kind == TOK_STRING) {
+			v = (struct value){.kind = VAL_STRING, .str = it->str, .pos = at};
+			f->pos++;
+		} else if (it->kind == TOK_LT) {
+			double c[5];
+			int n = 0;
+			f->pos++;
+			for (;;) {
+				if (n == 5 || !read_number(f, &c[n]))
+					parse_error_at(p, at, "#read: a vector in \"%s\" is malformed", f->name);
+				n++;
+				if (f->pos < f->ntoks && f->toks[f->pos].kind == TOK_COMMA) {
+					f->pos++;
+					continue;
+				}
+				if (f->pos < f->ntoks && f->toks[f->pos].kind == TOK_GT) {
+					f->pos++;
+					break;
+				}
+				parse_error_at(p, at, "#read: a vector in \"%s\" is malformed", f->name);
+			}
+			if (n < 2)
+				parse_error_at(p, at, "#read: a vector in \"%s\" has fewer than 2 components", f->name);
+			v = val_vector(n, c, VAL_VECTOR, at);
+		} else if (read_number(f, &x)) {
+			v = val_float(x, at);
+		} else {
+			char buf[128];
+			parse_error_at(p, at, "#read: cannot read %s from \"%s\" (only numbers, vectors and strings)",
+			               lex_describe(it, buf, sizeof buf), f->name);
+		}
+		parse_assign(p, var, false, v);
+	}
+	parse_expect(p, TOK_RPAREN);
+}
+
+static void put_word(FILE *fp, long long x, int bytes, bool big)
+{
+	for (int i = 0; i < bytes; i++) {
+		int shift = big ? (bytes - 1 - i) * 8 : i * 8;
+		fputc((int)((unsigned long long)x >> shift) & 0xff, fp);
+	}
+}
+
+/* #write ( IDENT , item {, item} ) : strings as they are, floats and
+ * vectors as POV-Ray prints them (%g), or binary words after uint8,
+ * sint16be, ... */
+void parse_write(struct parser *p)
+{
+	parse_expect(p, TOK_LPAREN);
+	struct sdl_file *f = file_arg(p, true);
+	while (parse_accept(p, TOK_COMMA)) {
+		int bytes = 0;
+		bool big = false;
+		const struct token *t = parse_peek(p);
+		if (t->kind == TOK_KEYWORD) {
+			switch (t->kw) {
+			case KW_UINT8: case KW_SINT8: bytes = 1; break;
+			case KW_UINT16BE: case KW_SINT16BE: bytes = 2; big = true; break;
+			case KW_UINT16LE: case KW_SINT16LE: bytes = 2; break;
+			case KW_SINT32BE: bytes = 4; big = true; break;
+			case KW_SINT32LE: bytes = 4; break;
+			default: break;
+			}
+			if (bytes)
+				parse_advance(p);
+		}
+		struct value v = parse_expression(p);
+		if (bytes) {
+			parse_need_float(p, &v, "a binary #write");
+			put_word(f->fp, (long long)v.v[0], bytes, big);
+			continue;
+		}
+		switch (v.kind) {
+		case VAL_STRING: fputs(v.str, f->fp); break;
+		case VAL_FLOAT: fprintf(f->fp, "%g", v.v[0]); break;
+		case VAL_VECTOR: case VAL_COLOR:
+			fputc('<', f->fp);
+			for (int i = 0; i < v.n; i++)
+				fprintf(f->fp, i ? ",%g" : "%g", v.v[i]);
+			fputs("> ", f->fp);
+			break;
+		default: {
+			const char *kind = val_kind_name(v.kind);
+			parse_drop(p, &v);
+			parse_error(p, "#write cannot write a %s", kind);
+		}
+		}
+	}
+	parse_expect(p, TOK_RPAREN);
+	fflush(f->fp);
+}
