@@ -449,11 +449,14 @@ static struct value parse_primary(struct parser *p)
 		 * ends meanwhile must not take the value with it. */
 		struct value c = ident_value_copy(p, v, at);
 		parse_advance(p);
-		if (c.kind == VAL_ARRAY && parse_peek_cont(p)->kind == TOK_LBRACKET) {
+		/* A[i][j]: an element, and an element of an element array. */
+		while (c.kind == VAL_ARRAY && parse_peek_cont(p)->kind == TOK_LBRACKET) {
 			struct value el = ident_value_copy(p, array_element(p, c.arr, name, at), at);
 			parse_drop(p, &c);
-			return el;
+			c = el;
 		}
+		if (c.owner == 0 || c.kind == VAL_ARRAY)
+			return c;
 		if ((c.kind == VAL_FUNCTION || c.kind == VAL_SPLINE) && parse_peek_cont(p)->kind == TOK_LPAREN) {
 			struct value r;
 			if (c.kind == VAL_FUNCTION) {

@@ -12,6 +12,8 @@
 
 /* ---- compiling functions ---- */
 
+static void free_fn_cb(void *f) { fn_unref(f); }
+
 struct fcomp {
 	struct parser *p;
 	struct fn *f;
@@ -183,6 +185,44 @@ static void c_primary(struct fcomp *c)
 			parse_advance(p);
 			emit(c, FN_CONST, 0, kval, 1);
 			return;
+		case KW_SUM: case KW_PROD: {
+			/* sum(i, lo, hi, body) / prod(...): body is compiled as a
+			 * function of this one's parameters plus i. */
+			parse_advance(p);
+			parse_expect(p, TOK_LPAREN);
+			const struct token *vt = parse_peek(p);
+			if (vt->kind != TOK_IDENT)
+				parse_expected(p, "the loop variable's name");
+			const char *var = vt->str;
+			parse_advance(p);
+			parse_expect(p, TOK_COMMA);
+			c_expr(c);
+			parse_expect(p, TOK_COMMA);
+			c_expr(c);
+			parse_expect(p, TOK_COMMA);
+			if (c->f->nparams + 1 > FN_MAX_PARAMS)
+				parse_error_at(p, at, "too many parameters and loop variables in one function");
+			struct fcomp body = {.p = p, .f = fn_new(c->f->nparams + 1)};
+			for (int i = 0; i < c->f->nparams; i++)
+				body.params[i] = c->params[i];
+			body.params[c->f->nparams] = var;
+			int slot = parse_own(p, body.f, free_fn_cb);
+			c_expr(&body);
+			parse_expect(p, TOK_RPAREN);
+			body.f->depth = body.maxdepth;
+			parse_release(p, slot);
+			struct fn *f = c->f;
+			f->callees = realloc(f->callees, (size_t)(f->ncallees + 1) * sizeof *f->callees);
+			if (!f->callees) abort();
+			f->callees[f->ncallees++] = body.f; /* the reference parse_function gave */
+			struct fn_instr in;
+			memset(&in, 0, sizeof in);
+			in.op = k == KW_SUM ? FN_SUM : FN_PROD;
+			in.fn = body.f;
+			fn_emit(f, in);
+			c->depth -= 1;
+			return;
+		}
 		case KW_MIN: case KW_MAX: {
 			parse_advance(p);
 			int n = c_args(c);
@@ -309,8 +349,6 @@ static void c_expr(struct fcomp *c)
 	}
 	c->p->expr_depth--;
 }
-
-static void free_fn_cb(void *f) { fn_unref(f); }
 
 /* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')' ) '}'
  * The current token is 'function'. */

@@ -100,6 +100,25 @@ double fn_eval(const struct fn *f, const double *args)
 			sp++;
 			break;
 		}
+		case FN_SUM:
+		case FN_PROD: {
+			/* The body is a function of this one's arguments and the loop
+			 * variable, which comes last. */
+			double lo = st[sp - 2], hi = st[sp - 1];
+			sp -= 2;
+			double a[FN_MAX_PARAMS];
+			int n = f->nparams;
+			for (int i = 0; i < n; i++)
+				a[i] = args[i];
+			double acc = in->op == FN_SUM ? 0 : 1;
+			for (double v = lo; v <= hi; v += 1) {
+				a[n] = v;
+				double x = fn_eval(in->fn, a);
+				acc = in->op == FN_SUM ? acc + x : acc * x;
+			}
+			st[sp++] = acc;
+			break;
+		}
 		case FN_JZ:
 			if (st[--sp] == 0)
 				pc = in->i - 1;

@@ -19,6 +19,8 @@ enum fn_op {
 	FN_SELECT,   /* pop i (3 or 4) values: select(a, b, c [, d]) */
 	FN_USER,     /* pop i values, push fn(values) */
 	FN_INTERNAL, /* pop i values, push internal function #k(values) */
+	FN_SUM,      /* pop hi, lo; push the sum of fn(args..., v) for v = lo..hi */
+	FN_PROD,     /* the same, multiplied */
 	FN_JZ,       /* pop; if zero, jump to instruction i */
 	FN_JMP,      /* jump to instruction i */
 };
