@@ -227,6 +227,17 @@ const struct token *parse_peek_cont(struct parser *p)
 			fetch(p);
 		return &p->cur;
 	}
+	const struct frame *f = &p->frames[p->nframes - 1];
+	if (f->pos < f->end) {
+		/* The common case: look at the frame's next token in place. */
+		if (f->toks[f->pos].kind == TOK_HASH) {
+			p->cur = f->toks[f->pos];
+			p->have_cur = true;
+			return &p->cur;
+		}
+		fetch(p);
+		return &p->cur;
+	}
 	struct token t = parse_raw(p);
 	if (t.kind != TOK_EOF)
 		p->frames[p->nframes - 1].pos--; /* put it back */
