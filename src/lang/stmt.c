@@ -693,6 +693,6 @@ void parse_statement(struct parser *p)
 		}
 	}
 	if (t->kind == TOK_IDENT && !parse_lookup(p, t->str))
-		parse_error(p, "undefined identifier '%s'", t->str);
+		parse_undefined(p, t->str);
 	parse_expected(p, "an object, light_source, camera, global_settings, background or directive");
 }

@@ -1,0 +1,3 @@
+// expect: 3:25: dimensions needs an array, not a float
+#declare A = 1;
+#declare D = dimensions(A);

@@ -1,0 +1,2 @@
+// expect: 2:9: expected ',', found number 1
+#for (I 1, 3) #end

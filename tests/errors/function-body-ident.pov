@@ -1,0 +1,2 @@
+// expect: 2:29: undefined identifier 'Missing'
+#declare F = function { x + Missing }

@@ -1,0 +1,2 @@
+// expect: 2:8: expected '(' after #ifdef, found identifier 'A'
+#ifdef A #end

@@ -1,0 +1,2 @@
+// expect: 2:14: rand() needs a stream made by seed(), not 7
+#declare R = rand(7);
