@@ -1,19 +1,1111 @@
-/* fn_internal.c: POV-Ray's internal functions (function { internal(N) }),
- * numbered as POV-Ray numbers them. (Being written.) */
+/* fn_internal.c: POV-Ray's internal functions, the ones a scene reaches
+ * through `function { internal(N) }` and that POV-Ray's functions.inc names
+ * f_sphere, f_torus, f_helix1 and so on.
+ *
+ * The numbering and the parameter lists are POV-Ray 3.7's. Each function
+ * receives x, y, z and then its own parameters P0, P1, ... in one array.
+ * The manual (the functions.inc section of the include-files chapter) names
+ * the functions and their parameters; the formulas were worked out by
+ * evaluating POV-Ray 3.7 at many points and written anew from that. The
+ * deterministic functions reproduce POV-Ray's values to rounding (the unit
+ * test holds the recorded values), with these exceptions:
+ *   - f_comma matches on its ball only; its tail is an approximation;
+ *   - f_helical_torus matches without twist, threshold, second fatness and
+ *     grooves (and with a whole number of loops) only;
+ *   - f_mesh1 matches for positive thread spacings only.
+ * The noise-based ones (f_noise3d, f_noise_generator, f_hetero_mf, f_ridge,
+ * f_ridged_mf) use our own gradient noise and so have POV-Ray's range and
+ * character but not its values.
+ *
+ * Conventions that many functions share:
+ *   - "field strength" functions return P0 times a polynomial, clamped to
+ *     [-10, 10] (field());
+ *   - the "_2d" functions describe a curve in the xy plane; with their SOR
+ *     switch above zero the curve is swept around the y axis instead of
+ *     being extruded along z (sor());
+ *   - helix, spiral and the like measure their cross section with a norm
+ *     chosen by a "cross section type" parameter (section_norm()). */
 #include "scene/fn.h"
 
 #include <math.h>
+#include <stdint.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define SQRT2 1.41421356237309504880
+
+/* The bound that POV-Ray puts on the "field strength" functions. */
+#define FIELD_LIMIT 10.0
+
+static double sq(double v)
+{
+	return v * v;
+}
+
+/* v truncated toward zero as C's cast does, but kept within [-limit,
+ * limit] (and 0 for NaN) so that the cast is always defined. Counts of
+ * tubes and octaves go through it, so a wild parameter cannot make a
+ * function loop for long. */
+static int to_int(double v, int limit)
+{
+	if (!(v == v))
+		return 0;
+	if (v > limit)
+		return limit;
+	if (v < -limit)
+		return -limit;
+	return (int)v;
+}
+
+/* P0 * v, clamped to [-FIELD_LIMIT, FIELD_LIMIT]. */
+static double field(double p0, double v)
+{
+	double r = p0 * v;
+	if (r > FIELD_LIMIT)
+		r = FIELD_LIMIT;
+	if (r < -FIELD_LIMIT)
+		r = -FIELD_LIMIT;
+	return r;
+}
+
+/* The SOR transformation of the "_2d" functions: with the switch above
+ * zero, (x, y) becomes the distance from the y axis less the offset and y,
+ * rotated by angle degrees about z. Otherwise x and y are left as they are
+ * (the curve is extruded along z). */
+static void sor(const double *a, double sw, double offset, double angle,
+		double *px, double *py)
+{
+	double x = a[0], y = a[1];
+	if (sw > 0) {
+		double t = angle * (M_PI / 180);
+		double u = sqrt(a[0] * a[0] + a[2] * a[2]) - offset;
+		x = u * cos(t) - y * sin(t);
+		y = u * sin(t) + y * cos(t);
+	}
+	*px = x;
+	*py = y;
+}
+
+/* The norm of a cross section offset (u, v) for the helix and spiral
+ * functions' "cross section type" t: 0 is a square (the max norm), 1 a
+ * circle, 2 a diamond, and in general the L(2/t) norm. */
+static double section_norm(double u, double v, double t)
+{
+	u = fabs(u);
+	v = fabs(v);
+	if (t == 0)
+		return u > v ? u : v;
+	double p = 2 / t;
+	return pow(pow(u, p) + pow(v, p), 1 / p);
+}
+
+/* ---- the algebraic cylinders (0-3): P0 field strength, P1 field limit,
+ * P2-P4 the SOR switch, offset and angle ---- */
+
+static double algbr_cyl(const double *a, double curve)
+{
+	double r = a[3] * curve, lim = a[4];
+	if (r > lim)
+		r = lim;
+	if (r < -lim)
+		r = -lim;
+	return r;
+}
+
+static double f_algbr_cyl1(const double *a)
+{
+	double x, y;
+	sor(a, a[5], a[6], a[7], &x, &y);
+	return algbr_cyl(a, x * x * (fabs(x) - 1) + y * y);
+}
+
+static double f_algbr_cyl2(const double *a)
+{
+	double x, y;
+	sor(a, a[5], a[6], a[7], &x, &y);
+	double x2 = x * x, y2 = y * y;
+	return algbr_cyl(a, -y2 + 3 * x2 * y + 2 * y2 * y - 2 * x2 * x2 - y2 * y2);
+}
+
+static double f_algbr_cyl3(const double *a)
+{
+	double x, y;
+	sor(a, a[5], a[6], a[7], &x, &y);
+	double x2 = x * x, y2 = y * y;
+	return algbr_cyl(a, -y2 + 2 * x2 * y + x * y2 - x2 * x2 - x2 * y2);
+}
+
+static double f_algbr_cyl4(const double *a)
+{
+	double x, y;
+	sor(a, a[5], a[6], a[7], &x, &y);
+	double x2 = x * x, y2 = y * y;
+	return algbr_cyl(a, -3 * x2 * y + y2 * y - sq(x2 + y2));
+}
+
+/* ---- field strength surfaces: P0 field strength, then shape
+ * parameters ---- */
+
+static double f_bicorn(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], s = a[4];
+	double r2 = x * x + z * z;
+	return field(a[3], y * y * (s * s - r2) - sq(r2 + 2 * s * y - s * s));
+}
+
+static double f_bifolia(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double r2 = x * x + z * z;
+	return field(a[3], a[4] * y * r2 - sq(r2 + y * y));
+}
+
+/* Apery's sextic for Boy's surface, scaled by P1. */
+static double f_boy_surface(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double x2 = x * x, y2 = y * y, z2 = z * z, h = x2 + y2;
+	double w = 1 - z;
+	double v = 64 * w * w * w * z2 * z
+		- 48 * w * w * z2 * (3 * h + 2 * z2)
+		+ 12 * w * z * (27 * h * h - 24 * z2 * h
+				+ 36 * SQRT2 * y * z * (y2 - 3 * x2) + 4 * z2 * z2)
+		+ (9 * h - 2 * z2) * (-81 * h * h - 72 * z2 * h
+				+ 108 * SQRT2 * x * z * (x2 - 3 * y2) + 4 * z2 * z2);
+	return field(a[3], a[4] * v);
+}
+
+static double f_crossed_trough(const double *a)
+{
+	return field(a[3], a[0] * a[0] * a[2] * a[2] - a[1]);
+}
+
+static double f_cubic_saddle(const double *a)
+{
+	double x = a[0], y = a[1];
+	return field(a[3], a[2] - x * x * x + y * y * y);
+}
+
+/* f_cushion and f_odd are the same function in POV-Ray 3.7. */
+static double f_cushion(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z = a[2], z2 = z * z;
+	double v = x2 + y2 - 2 * z2 + 2 * y2 * z + 2 * z2 * z
+		- sq(x2 + y2) + x2 * z2 - y2 * z2 - z2 * z2;
+	return field(a[3], v);
+}
+
+static double f_devils_curve(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	return field(a[3], y2 * y2 - sq(x2 + z2) + 0.36 * x2 - 0.25 * y2);
+}
+
+static double f_devils_curve_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[6], a[7], a[8], &x, &y);
+	double x2 = x * x, y2 = y * y;
+	return field(a[3], x2 * (a[4] * a[4] - x2) + y2 * (y2 - a[5] * a[5]));
+}
+
+/* A torus of radii P1, P2 displaced by (P3, P4, 0) and inverted in a
+ * sphere of radius P5, cleared of denominators. The last term is part of
+ * POV-Ray's polynomial although it does not follow from the inversion. */
+static double f_dupin_cyclid(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double R = a[4], r = a[5], dx = a[6], dy = a[7], k = a[8];
+	double k2 = k * k, r2 = x * x + y * y + z * z;
+	double c = dx * dx + dy * dy + R * R - r * r;
+	double s = k2 * k2 - 2 * k2 * (x * dx + y * dy) + c * r2;
+	double v = s * s - 4 * R * R * (sq(k2 * x - dx * r2) + k2 * k2 * z * z)
+		+ 8 * (R * R - r * r) * dy * k2 * y * r2;
+	return field(a[3], -v);
+}
+
+/* Enneper's surface. The z in the denominators is kept at least 0.2 away
+ * from zero (POV-Ray uses 0.2 for |z| < 0.2, whatever z's sign). */
+static double f_enneper(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double u = x * x - y * y;
+	double zd = fabs(z) < 0.2 ? 0.2 : z;
+	double c = u / (2 * zd) - z * z * (2.0 / 9);
+	return field(a[3], c * c * c + 6 * sq(u / (4 * zd)));
+}
+
+static double f_folium_surface(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double n = a[4], d = a[5];
+	return field(a[3], (y * y + z * z) * (1 + (d - 4 * n) * x) + x * x * (1 + d));
+}
+
+static double f_folium_surface_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[6], a[7], a[8], &x, &y);
+	double n = a[4], d = a[5];
+	return field(a[3], -(y * y * (1 + (d - 4 * n) * x) + x * x * (1 + d)));
+}
+
+static double f_glob(const double *a)
+{
+	double x = a[0], x4 = x * x * x * x;
+	return field(a[3], 0.5 * x4 * (1 + x) - a[1] * a[1] - a[2] * a[2]);
+}
+
+static double f_heart(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z = a[2], z2 = z * z;
+	double b = 2 * x2 + y2 + z2 - 1;
+	return field(a[3], -b * b * b + (0.1 * x2 + y2) * z2 * z);
+}
+
+static double f_hunt_surface(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double b = x2 + y2 + z2 - 13;
+	return field(a[3], -(4 * b * b * b + 27 * sq(3 * x2 + y2 - 4 * z2 - 12)));
+}
+
+static double f_hyperbolic_torus(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double R2 = a[4] * a[4], r2 = a[5] * a[5];
+	return field(a[3], 4 * R2 * (x2 - z2) - sq(x2 + y2 - z2 + R2 - r2));
+}
+
+static double f_kampyle_of_eudoxus(const double *a)
+{
+	double x2 = a[0] * a[0], d = a[4], c = a[5];
+	return field(a[3], c * c * x2 * (x2 - d * d) - a[1] * a[1] - a[2] * a[2]);
+}
+
+static double f_kampyle_of_eudoxus_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[6], a[7], a[8], &x, &y);
+	double x2 = x * x, d = a[4], c = a[5];
+	return field(a[3], c * c * x2 * x2 - d * c * c * c * x2 - y * y);
+}
+
+/* The Klein bottle's sextic, negated. */
+static double f_klein_bottle(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double r2 = x * x + y * y + z * z;
+	double m = r2 - 2 * y - 1;
+	return field(a[3], -((r2 + 2 * y - 1) * (m * m - 8 * z * z) + 16 * x * z * m));
+}
+
+static double f_kummer_surface_v1(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double v = x2 + y2 + z2 - 1 - (x2 * x2 + y2 * y2 + z2 * z2)
+		+ x2 * y2 + x2 * z2 + y2 * z2;
+	return field(a[3], v);
+}
+
+static double f_kummer_surface_v2(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double x2 = x * x, y2 = y * y, z2 = z * z;
+	double v = 1 - a[4] * (x2 + y2 + z2) - (x2 * x2 + y2 * y2 + z2 * z2)
+		- a[6] * x * y * z - a[5] * (x2 * y2 + x2 * z2 + y2 * z2);
+	return field(a[3], v);
+}
+
+static double f_lemniscate_of_gerono(const double *a)
+{
+	double x2 = a[0] * a[0];
+	return field(a[3], x2 - x2 * x2 - a[1] * a[1] - a[2] * a[2]);
+}
+
+static double f_lemniscate_of_gerono_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[6], a[7], a[8], &x, &y);
+	double x2 = x * x, s = a[4], w = a[5];
+	return field(a[3], w * w * x2 * (s * s - x2) - y * y);
+}
+
+static double f_mitre(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	return field(a[3], y2 - 4 * x2 * (x2 + y2 + z2) - y2 * (y2 + z2));
+}
+
+static double f_nodal_cubic(const double *a)
+{
+	double y = a[1], z = a[2];
+	return field(a[3], 6 * y * z - y * y * y - z * z * z);
+}
+
+static double f_ovals_of_cassini(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double R2 = a[4] * a[4], fill = a[5], thick = a[6];
+	return field(a[3], fill * fill - sq(x2 + y2 + z2 + R2) + thick * R2 * (x2 + z2));
+}
+
+static double f_paraboloid(const double *a)
+{
+	return field(a[3], a[1] - a[0] * a[0] - a[2] * a[2]);
+}
+
+static double f_parabolic_torus(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1];
+	double R2 = a[4] * a[4], r2 = a[5] * a[5];
+	double w = x2 + y2 - a[2];
+	return field(a[3], -w * w + (R2 + r2) * w - 2 * R2 * y2 - sq(R2 - r2));
+}
+
+static double f_pillow(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	return field(a[3], x2 * x2 + y2 * y2 + z2 * z2 - x2 - y2 - z2);
+}
+
+static double f_piriform(const double *a)
+{
+	double x = a[0], x3 = x * x * x;
+	return field(a[3], x3 * x - x3 + a[1] * a[1] + a[2] * a[2]);
+}
+
+static double f_piriform_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[7], a[8], a[9], &x, &y);
+	double x3 = x * x * x, f = a[6];
+	return field(a[3], f * f * (a[4] * x3 + a[5] * x3 * x) - y * y);
+}
+
+static double f_quartic_paraboloid(const double *a)
+{
+	double x2 = a[0] * a[0], z2 = a[2] * a[2];
+	return field(a[3], a[1] - x2 * x2 - z2 * z2);
+}
+
+static double f_quartic_saddle(const double *a)
+{
+	double x2 = a[0] * a[0], z2 = a[2] * a[2];
+	return field(a[3], a[1] - x2 * x2 + z2 * z2);
+}
+
+static double f_quartic_cylinder(const double *a)
+{
+	double d = a[4], w = a[5];
+	double r2 = a[0] * a[0] + a[2] * a[2];
+	return field(a[3], d * d * w * w - r2 * (a[1] * a[1] + w * w));
+}
+
+static double f_steiners_roman(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double x2 = x * x, y2 = y * y, z2 = z * z;
+	return field(a[3], -(x2 * y2 + x2 * z2 + y2 * z2 + x * y * z));
+}
+
+static double f_strophoid(const double *a)
+{
+	double x = a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double f = a[6];
+	return field(a[3], (y2 + z2) * (x - a[5]) + f * f * x * x * (x + a[4]));
+}
+
+static double f_strophoid_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[7], a[8], a[9], &x, &y);
+	double f = a[6];
+	return field(a[3], y * y * (x - a[5]) + f * f * x * x * (x + a[4]));
+}
+
+static double f_torus2(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double R2 = a[4] * a[4], r2 = a[5] * a[5];
+	return field(a[3], 4 * R2 * (x2 + z2) - sq(x2 + y2 + z2 + R2 - r2));
+}
+
+static double f_torus_gumdrop(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double v = -17 + 20 * (x2 + y2 + z2) - 4 * (x2 * x2 + y2 * y2 + z2 * z2)
+		- 17 * x2 * (y2 + z2) - 8 * y2 * z2;
+	return field(a[3], v);
+}
+
+static double f_umbrella(const double *a)
+{
+	return field(a[3], a[1] * a[2] * a[2] - a[0] * a[0]);
+}
+
+static double f_witch_of_agnesi(const double *a)
+{
+	double y = a[1], w = a[4];
+	return field(a[3], w * (1 - y) - y * (a[0] * a[0] + a[2] * a[2]));
+}
+
+static double f_witch_of_agnesi_2d(const double *a)
+{
+	double x, y;
+	sor(a, a[6], a[7], a[8], &x, &y);
+	return field(a[3], a[5] - y * (x * x + a[4] * a[4]));
+}
+
+/* ---- blobs and ellipsoid families ---- */
+
+/* One component of f_blob: (1 - d2)^2 inside the unit radius. */
+static double blob_density(double d2)
+{
+	return d2 < 1 ? sq(1 - d2) : 0;
+}
+
+/* Two components at (-P0/2, 0, 0) and (P0/2, 0, 0) with strengths P1, P3
+ * and inverse radii P2, P4. */
+static double f_blob(const double *a)
+{
+	double x = a[0], yz = a[1] * a[1] + a[2] * a[2], h = a[3] / 2;
+	double d1 = (sq(x + h) + yz) * a[5] * a[5];
+	double d2 = (sq(x - h) + yz) * a[7] * a[7];
+	return -(a[4] * blob_density(d1) + a[6] * blob_density(d2));
+}
+
+/* Gaussian components at the origin and at (P0, 0, 0). */
+static double f_blob2(const double *a)
+{
+	double x = a[0], yz = a[1] * a[1] + a[2] * a[2];
+	double g = exp(-a[4] * (x * x + yz)) + exp(-a[4] * (sq(x - a[3]) + yz));
+	return a[6] - a[5] * g;
+}
+
+/* The three gaussian ellipsoids of f_cross_ellipsoids, f_isect_ellipsoids
+ * and f_flange_cover, each long along one axis: P0 is the eccentricity and
+ * P1 the inverse size. */
+static void ellipsoids3(const double *a, double e[3])
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double ecc = a[3], s = a[4];
+	e[0] = exp(-s * (x2 + ecc * (y2 + z2)));
+	e[1] = exp(-s * (y2 + ecc * (x2 + z2)));
+	e[2] = exp(-s * (z2 + ecc * (x2 + y2)));
+}
+
+static double f_cross_ellipsoids(const double *a)
+{
+	double e[3];
+	ellipsoids3(a, e);
+	double m = fmax(e[0], fmax(e[1], e[2]));
+	return a[6] - a[5] * m;
+}
+
+static double f_isect_ellipsoids(const double *a)
+{
+	double e[3];
+	ellipsoids3(a, e);
+	double m = fmin(e[0], fmin(e[1], e[2]));
+	return a[6] - a[5] * m;
+}
+
+static double f_flange_cover(const double *a)
+{
+	double e[3];
+	ellipsoids3(a, e);
+	return a[6] - a[5] * (e[0] + e[1] + e[2]);
+}
+
+static double f_ellipsoid(const double *a)
+{
+	return sqrt(sq(a[0] * a[3]) + sq(a[1] * a[4]) + sq(a[2] * a[5]));
+}
+
+/* P2 times the sum of three ellipsoids (as in f_flange_cover, with P0 the
+ * eccentricity and P1 the inverse size) less P4 times a gaussian sphere of
+ * inverse size P3. */
+static double f_spikes(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double r2 = x * x + y * y + z * z;
+	double sharp = a[3], s = a[4];
+	double sum = exp(-s * (x * x + sharp * (r2 - x * x)))
+		+ exp(-s * (y * y + sharp * (r2 - y * y)))
+		+ exp(-s * (z * z + sharp * (r2 - z * z)));
+	return a[5] * (sum - a[7] * exp(-a[6] * r2));
+}
+
+static double f_spikes_2d(const double *a)
+{
+	double x = a[0], z = a[2];
+	return a[1] - a[3] * cos(a[4] * x) * cos(a[5] * z) * exp(-a[6] * (x * x + z * z));
+}
+
+/* A d orbital's density cloud; P0 is not used. */
+static double f_quantum(const double *a)
+{
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double r = sqrt(x2 + y2 + z2);
+	return 1.2 - 1.6 * sq(2 * y2 - x2 - z2) * exp(-1.33333332 * r);
+}
+
+/* ---- simple shapes and coordinates ---- */
+
+static double f_ph(const double *a)
+{
+	return atan2(sqrt(a[0] * a[0] + a[2] * a[2]), a[1]);
+}
+
+static double f_r(const double *a)
+{
+	return sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+static double f_th(const double *a)
+{
+	return atan2(a[0], a[2]);
+}
+
+static double f_sphere(const double *a)
+{
+	return f_r(a) - a[3];
+}
+
+static double f_torus(const double *a)
+{
+	double d = sqrt(a[0] * a[0] + a[2] * a[2]) - a[3];
+	return sqrt(d * d + a[1] * a[1]) - a[4];
+}
+
+/* A box of half sizes P1-P3 with edges rounded to radius P0. Inside, the
+ * value is -P0 (not a signed distance); POV-Ray subtracts another 1e-6. */
+static double f_rounded_box(const double *a)
+{
+	double r = a[3];
+	double qx = fmax(fabs(a[0]) - a[4] + r, 0);
+	double qy = fmax(fabs(a[1]) - a[5] + r, 0);
+	double qz = fmax(fabs(a[2]) - a[6] + r, 0);
+	return sqrt(qx * qx + qy * qy + qz * qz) - r - 1e-6;
+}
+
+static double f_superellipsoid(const double *a)
+{
+	double e = a[3], n = a[4];
+	double xy = pow(fabs(a[0]), 2 / e) + pow(fabs(a[1]), 2 / e);
+	return 1 - pow(pow(xy, e / n) + pow(fabs(a[2]), 2 / n), n / 2);
+}
+
+/* y polynomial of degree 4 with coefficients c[0..4] (constant first). */
+static double poly4(const double *c, double y)
+{
+	return c[0] + y * (c[1] + y * (c[2] + y * (c[3] + y * c[4])));
+}
+
+/* The surface of revolution of x = poly(y); the polynomial is kept at
+ * least -5. */
+static double f_poly4(const double *a)
+{
+	double p = fmax(poly4(a + 3, a[1]), -5);
+	return sqrt(a[0] * a[0] + a[2] * a[2]) - p;
+}
+
+/* The distance to the nearest of int(P0) tubes that each follow
+ * x = poly(y) in a plane through the y axis, the planes 2 pi / P0 apart,
+ * the first containing +z; 10000 when there are none. */
+static double f_polytubes(const double *a)
+{
+	double x = a[0], z = a[2], n = a[3];
+	double p = poly4(a + 4, a[1]);
+	double best = 10000;
+	int count = to_int(n, 100000);
+	for (int k = 0; k < count; k++) {
+		double t = 2 * M_PI * k / n;
+		double d = hypot(x - p * sin(t), z - p * cos(t));
+		if (d < best)
+			best = d;
+	}
+	return best;
+}
+
+/* ---- lattices ---- */
+
+/* The hexagon norm of the f_hex_x cells: flat sides across x. */
+static double hex_norm(double dx, double dy)
+{
+	dx = fabs(dx);
+	dy = fabs(dy);
+	return fmax(dx, 0.5 * dx + 0.5 * sqrt(3.0) * dy);
+}
+
+/* Hexagonal prisms along z: the hexagon norm to the nearest point of the
+ * triangular lattice with spacing sqrt(3) (points (sqrt 3 i, 3 j) and the
+ * same shifted by (sqrt(3) / 2, 3 / 2)). P0 is not used. */
+static double f_hex_x(const double *a)
+{
+	const double w = sqrt(3.0), h = 3.0;
+	double x = a[0], y = a[1];
+	double best = HUGE_VAL;
+	for (int s = 0; s < 2; s++) {
+		double ox = s ? w / 2 : 0, oy = s ? h / 2 : 0;
+		double cx = ox + w * floor((x - ox) / w);
+		double cy = oy + h * floor((y - oy) / h);
+		for (int i = 0; i < 2; i++)
+			for (int j = 0; j < 2; j++) {
+				double d = hex_norm(x - cx - i * w, y - cy - j * h);
+				if (d < best)
+					best = d;
+			}
+	}
+	return best;
+}
+
+/* The distance from v to the nearest multiple of p. */
+static double wrap_dist(double v, double p)
+{
+	return fabs(v - p * floor(v / p + 0.5));
+}
+
+/* Three families of planes along z, 1.5 apart, across y and at +-60
+ * degrees to it: the edges of a triangular lattice. P0 is not used. */
+static double f_hex_y(const double *a)
+{
+	double x = a[0], y = a[1];
+	double s = 0.5 * sqrt(3.0);
+	return fmin(wrap_dist(y, 1.5),
+			fmin(wrap_dist(s * x - 0.5 * y, 1.5), wrap_dist(s * x + 0.5 * y, 1.5)));
+}
+
+/* Threads along z at x = i P0 and along x at z = j P1, weaving up and down
+ * with amplitude P3; P2 scales the distance across a thread, P4 along y.
+ * (POV-Ray's values for negative spacings differ.) */
+static double f_mesh1(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double sx = a[3], sz = a[4], wxz = a[5], amp = a[6], wy = a[7];
+	double best = HUGE_VAL;
+	double i0 = floor(x / sx), j0 = floor(z / sz);
+	for (int k = 0; k < 2; k++) {
+		double i = i0 + k;
+		double sign = fmod(i, 2) == 0 ? -1 : 1;
+		double yc = sign * amp * cos(M_PI * z / sz);
+		double d = hypot((x - i * sx) * wxz, (y - yc) * wy);
+		if (d < best)
+			best = d;
+	}
+	for (int k = 0; k < 2; k++) {
+		double j = j0 + k;
+		double sign = fmod(j, 2) == 0 ? 1 : -1;
+		double yc = sign * amp * cos(M_PI * x / sx);
+		double d = hypot((z - j * sz) * wxz, (y - yc) * wy);
+		if (d < best)
+			best = d;
+	}
+	return best;
+}
+
+/* ---- helices and spirals ---- */
+
+/* P0 helices of period 2 pi / P1 in y, major radius P3, minor radius P2,
+ * cross section stretched by P4 along y, of type P5 and turned by P6
+ * degrees. The helices pass angle pi / P0 (from +x towards +z) at y = 0.
+ * The cross section is measured in the plane through the y axis, its
+ * vertical offset wrapped to the nearest turn; it never exceeds the
+ * distance to the tube center on the far side of the axis. */
+static double f_helix1(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double n = a[3], per = a[4], R = a[6];
+	double rho = sqrt(x * x + z * z);
+	double d = y + (atan2(z, x) - M_PI / n) / per;
+	double w = 2 * M_PI / (n * per);
+	d -= w * floor(d / w + 0.5);
+	double u = rho - R, v = d / a[7];
+	double t = a[9] * (M_PI / 180);
+	double s = section_norm(u * cos(t) - v * sin(t), u * sin(t) + v * cos(t), a[8]);
+	return fmin(s, rho + R) - a[5];
+}
+
+/* One helix: the point is turned by -P1 y about the y axis and measured in
+ * the xz plane from (P3, 0) with a cross section of type P5; P0, P4 and P6
+ * are not used. */
+static double f_helix2(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double t = a[4] * y;
+	double xr = x * cos(t) + z * sin(t);
+	double zr = -x * sin(t) + z * cos(t);
+	return section_norm(xr - a[6], zr, a[8]) - a[5];
+}
+
+/* An Archimedean spiral in the xz plane, P0 between windings, P1 thick,
+ * cut off by a sphere of radius P2; P5 is the cross section type. */
+static double f_spiral(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2], d = a[3];
+	double rho = sqrt(x * x + z * z);
+	double w = fmod(rho / d + atan2(z, x) / (2 * M_PI), 1.0);
+	double s = fmin(section_norm(d * (w - 0.5), y, a[8]), sqrt(rho * rho + y * y));
+	double r = sqrt(x * x + y * y + z * z);
+	return fmax(s - a[4], r - a[5]);
+}
+
+/* A torus of major radius P0 with a winding. Only partly reproduces
+ * POV-Ray: it matches for a whole P1, P2 = 0, P4 = 0, P6 = 1 and
+ * P7 = P8 = P9 = 0 (any P0, P3 and P5). The twist (P2), the threshold (P4),
+ * the second fatness (P6), a fractional P1 and the grooves (P7-P9) follow
+ * the shapes POV-Ray draws but not its values.
+ *
+ * With d the distance from the core circle and phi the angle around it,
+ * the winding is P1 rings (or, twisted, one helix) of radius P5 around the
+ * core; like f_helix1, the winding's cross section never exceeds d + P5.
+ * A column of radius P5 - P0 around the y axis takes over for large P5. */
+static double f_helical_torus(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double R = a[3], loops = a[4], twist = a[5], fat = a[6], thr = a[7];
+	double wr = a[8], fat2 = a[9], gper = a[10], gamp = a[11], gphase = a[12];
+	double rho = sqrt(x * x + z * z);
+	double th = atan2(z, x);
+	if (th < 0)
+		th += 2 * M_PI;
+	double u = rho - R, d = sqrt(u * u + y * y);
+	double dw = loops * (th - M_PI / 2) + M_PI - twist * atan2(y, u);
+	dw -= 2 * M_PI * floor(dw / (2 * M_PI) + 0.5);
+	double s = fmin(sqrt(sq(d - wr) + sq(dw / fat2)), d + wr);
+	double phase = 1 - cos(gphase * (th - M_PI / 2));
+	double groove = 1 - cos(gper * (atan2(2 * d, M_PI * gamp) - M_PI / 2));
+	return fmin(s - fat - thr + phase + groove, rho + R - wr);
+}
+
+/* The comma of size 1: a ball of radius 0.5 at (0.5, 0, 0) (as POV-Ray's)
+ * and a tail that curls from it over +z to (-1, 0, 0), thinning to nothing
+ * (an approximation of POV-Ray's tail). */
+static double comma1(double x, double y, double z)
+{
+	double ball = sqrt(sq(x - 0.5) + y * y + z * z) - 0.5;
+	double cx = x + 0.25;
+	double ang = atan2(z, cx);
+	double tail;
+	if (ang >= 0) {
+		double r = 0.35 * (1 - ang / M_PI);
+		tail = sqrt(sq(sqrt(cx * cx + z * z) - 0.75) + y * y) - r;
+	} else {
+		tail = sqrt(sq(x + 1) + y * y + z * z);
+	}
+	return fmin(ball, tail);
+}
+
+/* A comma scaled by P0. Matches POV-Ray on the ball; the tail is only
+ * approximated. */
+static double f_comma(const double *a)
+{
+	double s = a[3];
+	return s * comma1(a[0] / s, a[1] / s, a[2] / s);
+}
+
+/* ---- noise ----
+ * POV-Ray's noise cannot be reproduced without its implementation, so these
+ * use our own gradient noise: same range ([0, 1]) and character (smooth,
+ * about one feature per unit), different values. */
+
+/* A 32-bit hash of a lattice point. */
+static uint32_t lattice_hash(int32_t i, int32_t j, int32_t k, uint32_t seed)
+{
+	uint32_t h = seed ^ 0x9e3779b9u;
+	h ^= (uint32_t)i * 0x85ebca6bu;
+	h = (h << 13 | h >> 19) * 5 + 0xe6546b64u;
+	h ^= (uint32_t)j * 0xc2b2ae35u;
+	h = (h << 13 | h >> 19) * 5 + 0xe6546b64u;
+	h ^= (uint32_t)k * 0x27d4eb2fu;
+	h ^= h >> 16;
+	h *= 0x85ebca6bu;
+	h ^= h >> 13;
+	h *= 0xc2b2ae35u;
+	h ^= h >> 16;
+	return h;
+}
+
+/* The gradient at a lattice point (one of the 12 cube edge directions)
+ * dotted with the offset (dx, dy, dz). */
+static double grad_dot(uint32_t h, double dx, double dy, double dz)
+{
+	switch (h % 12) {
+	case 0: return dx + dy;
+	case 1: return -dx + dy;
+	case 2: return dx - dy;
+	case 3: return -dx - dy;
+	case 4: return dx + dz;
+	case 5: return -dx + dz;
+	case 6: return dx - dz;
+	case 7: return -dx - dz;
+	case 8: return dy + dz;
+	case 9: return -dy + dz;
+	case 10: return dy - dz;
+	default: return -dy - dz;
+	}
+}
+
+static double fade(double t)
+{
+	return t * t * t * (t * (t * 6 - 15) + 10);
+}
+
+static double lerp(double t, double a, double b)
+{
+	return a + t * (b - a);
+}
+
+/* A lattice coordinate (a whole number) as a 32-bit integer, wrapped
+ * modulo 2^32 so that far coordinates are defined too. */
+static int32_t lattice_coord(double f)
+{
+	const double m = 4294967296.0;
+	return (int32_t)(uint32_t)(f - m * floor(f / m));
+}
+
+/* Gradient noise in about [-1, 1], zero at the lattice points; NaN where a
+ * coordinate is not finite. */
+static double gradient_noise(double x, double y, double z, uint32_t seed)
+{
+	if (!isfinite(x) || !isfinite(y) || !isfinite(z))
+		return NAN;
+	double fx = floor(x), fy = floor(y), fz = floor(z);
+	int32_t i = lattice_coord(fx), j = lattice_coord(fy), k = lattice_coord(fz);
+	double dx = x - fx, dy = y - fy, dz = z - fz;
+	double u = fade(dx), v = fade(dy), w = fade(dz);
+	double c[2][2][2];
+	for (int a = 0; a < 2; a++)
+		for (int b = 0; b < 2; b++)
+			for (int e = 0; e < 2; e++)
+				c[a][b][e] = grad_dot(lattice_hash(i + a, j + b, k + e, seed),
+						dx - a, dy - b, dz - e);
+	double x00 = lerp(u, c[0][0][0], c[1][0][0]);
+	double x10 = lerp(u, c[0][1][0], c[1][1][0]);
+	double x01 = lerp(u, c[0][0][1], c[1][0][1]);
+	double x11 = lerp(u, c[0][1][1], c[1][1][1]);
+	return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
+}
+
+static double clamp01(double v)
+{
+	return v < 0 ? 0 : v > 1 ? 1 : v;
+}
+
+/* Noise in [0, 1] by generator: 1 is POV-Ray's original generator, whose
+ * values often clip at 0 and 1; 2 (the default) is range corrected; 3 is
+ * Perlin's. The generator number is taken modulo 4 and 0 acts as 1, as in
+ * POV-Ray. */
+static double noise_gen(double x, double y, double z, int gen)
+{
+	switch ((unsigned)gen & 3u) {
+	case 0:
+	case 1:
+		return clamp01(0.5 + 0.75 * gradient_noise(x, y, z, 1));
+	case 2:
+		return clamp01(0.5 + 0.5 * gradient_noise(x, y, z, 1));
+	default:
+		return clamp01(0.5 + 0.5 * gradient_noise(x, y, z, 3));
+	}
+}
+
+static double f_noise3d(const double *a)
+{
+	return noise_gen(a[0], a[1], a[2], 2);
+}
+
+static double f_noise_generator(const double *a)
+{
+	return noise_gen(a[0], a[1], a[2], to_int(a[3], 1 << 20));
+}
+
+/* Noise in about [-1, 1] for the fractal sums. */
+static double snoise(double x, double y, double z, int gen)
+{
+	return 2 * noise_gen(x, y, z, gen) - 1;
+}
+
+/* Musgrave's heterogeneous multifractal: P0 H, P1 lacunarity, P2 octaves,
+ * P3 offset, P4 T (0: plain 1/f sum; 1: each octave weighted by the value so
+ * far, so low places stay smooth), P5 the noise generator. */
+static double f_hetero_mf(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double H = a[3], lac = a[4], oct = a[5], off = a[6], T = a[7];
+	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	double freq = 1, v = off + snoise(x, y, z, gen);
+	for (int i = 1; i <= octaves; i++) {
+		double part = i < octaves ? 1 : oct - octaves;
+		if (part <= 0)
+			break;
+		freq *= lac;
+		x *= lac;
+		y *= lac;
+		z *= lac;
+		double weight = T * v + (1 - T);
+		v += part * (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
+	}
+	return v;
+}
+
+/* Ridged noise: P0 lambda (the lacunarity), P1 octaves, P2 omega (the
+ * gain of each octave), P3 offset, P4 ridge, P5 generator. Each octave adds
+ * omega^i ((1 - offset) - noise) / ridge, noise in [0, 1], and the sum is
+ * divided by the sum of the omega^i: for one octave with offset 0 or 1 this
+ * is POV-Ray's shape (1 - noise or -noise over ridge), and the sums have
+ * about POV-Ray's range. */
+static double f_ridge(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double lambda = a[3], oct = a[4], omega = a[5], off = a[6], ridge = a[7];
+	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	double v = 0, amp = 1, total = 0;
+	for (int i = 0; i < octaves || i == 0; i++) {
+		v += amp * ((1 - off) - noise_gen(x, y, z, gen)) / ridge;
+		total += amp;
+		amp *= omega;
+		x *= lambda;
+		y *= lambda;
+		z *= lambda;
+	}
+	return total != 0 ? v / total : v;
+}
+
+/* Musgrave's ridged multifractal: P0 H, P1 lacunarity, P2 octaves, P3
+ * offset, P4 gain, P5 generator. */
+static double f_ridged_mf(const double *a)
+{
+	double x = a[0], y = a[1], z = a[2];
+	double H = a[3], lac = a[4], oct = a[5], off = a[6], gain = a[7];
+	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	double sig = sq(off - fabs(snoise(x, y, z, gen)));
+	double v = sig, freq = 1;
+	for (int i = 1; i < octaves; i++) {
+		x *= lac;
+		y *= lac;
+		z *= lac;
+		freq *= lac;
+		double w = sig * gain;
+		w = w > 1 ? 1 : w < 0 ? 0 : w;
+		sig = sq(off - fabs(snoise(x, y, z, gen))) * w;
+		v += sig * pow(freq, -H);
+	}
+	return v;
+}
+
+/* Internal function 77 has no name in functions.inc and returns 0 for any
+ * point. */
+static double f_zero(const double *a)
+{
+	(void)a;
+	return 0;
+}
+
+/* ---- the table, in POV-Ray's numbering ---- */
+
+struct internal_def {
+	const char *name;    /* functions.inc's name, for the reader */
+	int nparams;         /* x, y, z and the extra parameters */
+	double (*eval)(const double *args);
+};
+
+static const struct internal_def internal_defs[] = {
+	{"f_algbr_cyl1", 8, f_algbr_cyl1},
+	{"f_algbr_cyl2", 8, f_algbr_cyl2},
+	{"f_algbr_cyl3", 8, f_algbr_cyl3},
+	{"f_algbr_cyl4", 8, f_algbr_cyl4},
+	{"f_bicorn", 5, f_bicorn},
+	{"f_bifolia", 5, f_bifolia},
+	{"f_blob", 8, f_blob},
+	{"f_blob2", 7, f_blob2},
+	{"f_boy_surface", 5, f_boy_surface},
+	{"f_comma", 4, f_comma},
+	{"f_cross_ellipsoids", 7, f_cross_ellipsoids},        /* 10 */
+	{"f_crossed_trough", 4, f_crossed_trough},
+	{"f_cubic_saddle", 4, f_cubic_saddle},
+	{"f_cushion", 4, f_cushion},
+	{"f_devils_curve", 4, f_devils_curve},
+	{"f_devils_curve_2d", 9, f_devils_curve_2d},
+	{"f_dupin_cyclid", 9, f_dupin_cyclid},
+	{"f_ellipsoid", 6, f_ellipsoid},
+	{"f_enneper", 4, f_enneper},
+	{"f_flange_cover", 7, f_flange_cover},
+	{"f_folium_surface", 6, f_folium_surface},            /* 20 */
+	{"f_folium_surface_2d", 9, f_folium_surface_2d},
+	{"f_glob", 4, f_glob},
+	{"f_heart", 4, f_heart},
+	{"f_helical_torus", 13, f_helical_torus},
+	{"f_helix1", 10, f_helix1},
+	{"f_helix2", 10, f_helix2},
+	{"f_hex_x", 4, f_hex_x},
+	{"f_hex_y", 4, f_hex_y},
+	{"f_hetero_mf", 9, f_hetero_mf},
+	{"f_hunt_surface", 4, f_hunt_surface},                /* 30 */
+	{"f_hyperbolic_torus", 6, f_hyperbolic_torus},
+	{"f_isect_ellipsoids", 7, f_isect_ellipsoids},
+	{"f_kampyle_of_eudoxus", 6, f_kampyle_of_eudoxus},
+	{"f_kampyle_of_eudoxus_2d", 9, f_kampyle_of_eudoxus_2d},
+	{"f_klein_bottle", 4, f_klein_bottle},
+	{"f_kummer_surface_v1", 4, f_kummer_surface_v1},
+	{"f_kummer_surface_v2", 7, f_kummer_surface_v2},
+	{"f_lemniscate_of_gerono", 4, f_lemniscate_of_gerono},
+	{"f_lemniscate_of_gerono_2d", 9, f_lemniscate_of_gerono_2d},
+	{"f_mesh1", 8, f_mesh1},                              /* 40 */
+	{"f_mitre", 4, f_mitre},
+	{"f_nodal_cubic", 4, f_nodal_cubic},
+	{"f_odd", 4, f_cushion},
+	{"f_ovals_of_cassini", 7, f_ovals_of_cassini},
+	{"f_paraboloid", 4, f_paraboloid},
+	{"f_parabolic_torus", 6, f_parabolic_torus},
+	{"f_ph", 3, f_ph},
+	{"f_pillow", 4, f_pillow},
+	{"f_piriform", 4, f_piriform},
+	{"f_piriform_2d", 10, f_piriform_2d},                 /* 50 */
+	{"f_poly4", 8, f_poly4},
+	{"f_polytubes", 9, f_polytubes},
+	{"f_quantum", 4, f_quantum},
+	{"f_quartic_paraboloid", 4, f_quartic_paraboloid},
+	{"f_quartic_saddle", 4, f_quartic_saddle},
+	{"f_quartic_cylinder", 6, f_quartic_cylinder},
+	{"f_r", 3, f_r},
+	{"f_ridge", 9, f_ridge},
+	{"f_ridged_mf", 9, f_ridged_mf},
+	{"f_rounded_box", 7, f_rounded_box},                  /* 60 */
+	{"f_sphere", 4, f_sphere},
+	{"f_spikes", 8, f_spikes},
+	{"f_spikes_2d", 7, f_spikes_2d},
+	{"f_spiral", 9, f_spiral},
+	{"f_steiners_roman", 4, f_steiners_roman},
+	{"f_strophoid", 7, f_strophoid},
+	{"f_strophoid_2d", 10, f_strophoid_2d},
+	{"f_superellipsoid", 5, f_superellipsoid},
+	{"f_th", 3, f_th},
+	{"f_torus", 5, f_torus},                              /* 70 */
+	{"f_torus2", 6, f_torus2},
+	{"f_torus_gumdrop", 4, f_torus_gumdrop},
+	{"f_umbrella", 4, f_umbrella},
+	{"f_witch_of_agnesi", 5, f_witch_of_agnesi},
+	{"f_witch_of_agnesi_2d", 9, f_witch_of_agnesi_2d},
+	{"f_noise3d", 3, f_noise3d},
+	{"(none)", 3, f_zero},
+	{"f_noise_generator", 4, f_noise_generator},
+};
+
+enum { INTERNAL_COUNT = sizeof internal_defs / sizeof internal_defs[0] };
 
 double fn_internal(int n, const double *args, int nargs)
 {
-	(void)n;
-	(void)args;
-	(void)nargs;
-	return NAN;
+	if (n < 0 || n >= INTERNAL_COUNT || nargs < internal_defs[n].nparams)
+		return NAN;
+	return internal_defs[n].eval(args);
 }
 
 int fn_internal_params(int n)
 {
-	(void)n;
-	return -1;
+	if (n < 0 || n >= INTERNAL_COUNT)
+		return -1;
+	return internal_defs[n].nparams;
 }
