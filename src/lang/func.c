@@ -600,14 +600,18 @@ struct value spline_eval(const struct spline *s, double t, struct srcpos at)
 					out[c] = lagrange(s, 0, n, t, c);
 					break;
 				}
-				/* Hermite between i and i+1 with tangents from the
-				 * neighbours (Catmull-Rom on the parameter values). */
+				/* Hermite between i and i+1; the tangent at a point is
+				 * the mean of the slopes of the chords on either side
+				 * (what POV-Ray evaluates, measured). */
 				double h = s->t[i + 1] - s->t[i];
 				double f = (t - s->t[i]) / h;
 				double p0 = s->v[(i - 1) * 5 + c], p1 = s->v[i * 5 + c];
 				double p2 = s->v[(i + 1) * 5 + c], p3 = s->v[(i + 2) * 5 + c];
-				double m1 = (p2 - p0) / (s->t[i + 1] - s->t[i - 1]) * h;
-				double m2 = (p3 - p1) / (s->t[i + 2] - s->t[i]) * h;
+				double s01 = (p1 - p0) / (s->t[i] - s->t[i - 1]);
+				double s12 = (p2 - p1) / h;
+				double s23 = (p3 - p2) / (s->t[i + 2] - s->t[i + 1]);
+				double m1 = 0.5 * (s01 + s12) * h;
+				double m2 = 0.5 * (s12 + s23) * h;
 				double f2 = f * f, f3 = f2 * f;
 				out[c] = (2 * f3 - 3 * f2 + 1) * p1 + (f3 - 2 * f2 + f) * m1 + (-2 * f3 + 3 * f2) * p2 + (f3 - f2) * m2;
 				break;
