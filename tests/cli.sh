@@ -78,6 +78,15 @@ check "assumed_gamma 1.0 encodes 0.5 as sRGB 188" grep -qE "Stats Avg: 188(\.0+)
 "$LUCENT" -q +W4 +H4 gold.pov && oiiotool gold.png --printstats > stats.txt 2>&1
 check "no #version: 0.5 is written as 128" grep -qE "Stats Avg: 128(\.0+)? " stats.txt
 
+# #fopen stays in the scene's folder unless --io-unrestricted.
+mkdir -p io/sub
+printf '#version 3.7;\n#fopen F "../escaped.txt" write\n#write (F, "x")\n#fclose F\n' > io/sub/esc.pov
+"$LUCENT" -q -F io/sub/esc.pov > err.txt 2>&1; rc=$?
+check "#fopen outside the scene's folder exits 1" [ $rc -eq 1 -a ! -f io/escaped.txt ]
+check "#fopen outside the scene's folder names the switch" contains err.txt "--io-unrestricted"
+"$LUCENT" -q -F --io-unrestricted io/sub/esc.pov > err.txt 2>&1; rc=$?
+check "--io-unrestricted lets #fopen leave the folder" [ $rc -eq 0 -a -f io/escaped.txt ]
+
 # Standard input
 "$LUCENT" -q +W16 +H12 - +Ostdin.png < ok.pov; rc=$?
 check "'-' reads the scene from standard input" [ $rc -eq 0 -a -f stdin.png ]
