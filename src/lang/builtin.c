@@ -484,9 +484,8 @@ struct value builtin_call(struct parser *p)
 		int n = (int)nd;
 		if (n < 2) n = 2;
 		if (n > 5) n = 5;
-		if (v.kind == VAL_VECTOR && v.n > n)
-			parse_error_at(p, v.pos, "vstr(): the vector has %d components, more than %d", v.n, n);
-		/* A float is a vector with only its first component set here
+		/* More components than N: the first N are written (POV-Ray's
+		 * behaviour, whatever its manual says). A float is a vector with only its first component set here
 		 * (POV-Ray's behaviour, whatever its manual says). */
 		for (int i = v.n; i < n; i++)
 			v.v[i] = 0;

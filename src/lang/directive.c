@@ -559,8 +559,8 @@ static void end_declaration(struct parser *p, bool numeric, const char *what)
 	run_closing_directives(p);
 	if (parse_peek_cont(p)->kind == TOK_SEMI)
 		parse_advance(p);
-	else if (numeric && p->version >= 3.7)
-		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray 3.7 needs it for floats, vectors and colors", what);
+	else if (numeric && p->version >= 3.5)
+		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray needs it for floats, vectors and colors", what);
 }
 
 /* IDENT '[' INT ']' ... '=' value : assign one element of an array. */
@@ -575,8 +575,14 @@ static void declare_element(struct parser *p, const char *name, bool local, stru
 	parse_expect(p, TOK_EQ);
 	struct value v = parse_rvalue(p);
 	bool numeric = val_is_numeric(&v);
-	/* Find the array again: reading the value may have run code. */
-	struct value *slot = parse_assign_slot(p, name, local);
+	/* Find the array again: reading the value may have run code. An
+	 * element is assigned where the array is, with #local too. */
+	(void)local;
+	struct value *slot = parse_lookup(p, name);
+	if (!slot) {
+		val_clear(&v);
+		parse_error_at(p, at, "array '%s' was undefined while its element was being assigned", name);
+	}
 	if (slot->kind != VAL_ARRAY || idx >= slot->arr->count) {
 		val_clear(&v);
 		parse_error_at(p, at, "array '%s' was changed while its element was being assigned", name);
@@ -768,6 +774,8 @@ void parse_directive(struct parser *p, size_t hash)
 		char buf[128];
 		parse_error_at(p, kwt.pos, "expected a directive name after '#', found %s", lex_describe(&kwt, buf, sizeof buf));
 	}
+	if (++p->directive_depth > MAX_DIRECTIVE_DEPTH)
+		parse_error_at(p, at, "directives nested inside each other too deeply (more than %d)", MAX_DIRECTIVE_DEPTH);
 	bool outer_defer = p->defer;
 	p->defer = true;
 	switch (kwt.kw) {
@@ -801,6 +809,7 @@ void parse_directive(struct parser *p, size_t hash)
 		parse_error_at(p, kwt.pos, "unknown directive '#%s'", kw_names[kwt.kw]);
 	}
 	p->defer = outer_defer;
+	p->directive_depth--;
 	/* A '#' that waited behind this directive's operands runs now, unless
 	 * an enclosing directive is still reading its own. */
 	if (!outer_defer && p->have_cur && p->cur.kind == TOK_HASH)

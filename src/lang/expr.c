@@ -286,7 +286,7 @@ static struct value parse_color_body(struct parser *p, struct srcpos at)
 {
 	struct value c;
 	const struct token *t = parse_peek(p);
-	if (t->kind == TOK_KEYWORD && (color_component((enum kw)t->kw) >= 0 || t->kw == KW_GRAY)) {
+	if (t->kind == TOK_KEYWORD && color_component((enum kw)t->kw) >= 0) {
 		double z[5] = {0};
 		c = val_vector(5, z, VAL_COLOR, at);
 	} else {
@@ -445,6 +445,14 @@ static struct value parse_primary(struct parser *p)
 		struct value *v = parse_lookup(p, name);
 		if (!v)
 			parse_undefined(p, name);
+		if (v->deprecated) {
+			if (*v->deprecated)
+				parse_warning_at(p, at, "%s", v->deprecated);
+			else
+				parse_warning_at(p, at, "'%s' is deprecated", name);
+			if (v->deprecated_once)
+				v->deprecated = NULL;
+		}
 		/* Hold the binding while its suffix is read: a macro frame that
 		 * ends meanwhile must not take the value with it. */
 		struct value c = ident_value_copy(p, v, at);

@@ -226,6 +226,16 @@ void parse_read(struct parser *p, struct srcpos at)
 			               lex_describe(it, buf, sizeof buf), f->name);
 		}
 		parse_assign(p, var, false, v);
+		/* An item the end of the file follows directly is the last: the
+		 * file's identifier goes away now (POV-Ray's behaviour). */
+		if (f->pos >= f->ntoks || f->toks[f->pos].kind == TOK_EOF) {
+			parse_expect(p, TOK_RPAREN);
+			for (int i = p->nframes - 1; i >= 0; i--)
+				if (p->frames[i].locals && sym_remove(p->frames[i].locals, fname))
+					return;
+			sym_remove(p->globals, fname);
+			return;
+		}
 	}
 	parse_expect(p, TOK_RPAREN);
 }

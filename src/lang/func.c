@@ -287,7 +287,10 @@ static void c_unary(struct fcomp *c)
 	if (t->kind == TOK_MINUS || t->kind == TOK_PLUS || t->kind == TOK_BANG) {
 		enum tok_kind k = (enum tok_kind)t->kind;
 		parse_advance(c->p);
+		if (++c->p->expr_depth > MAX_EXPR_DEPTH)
+			parse_error(c->p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
 		c_unary(c);
+		c->p->expr_depth--;
 		if (k == TOK_MINUS)
 			emit(c, FN_NEG, 0, 0, 0);
 		else if (k == TOK_BANG)
@@ -500,7 +503,9 @@ struct spline *parse_spline(struct parser *p)
 		struct value v = parse_expression(p);
 		parse_need_numeric(p, &v, "a spline point");
 		parse_accept(p, TOK_COMMA);
-		if (v.n > s->dim)
+		if (v.kind == VAL_FLOAT)
+			val_widen(&v, 5); /* a float fills every component */
+		else if (v.n > s->dim)
 			s->dim = v.n;
 		/* Sorted insertion; an equal parameter replaces the point. */
 		int i = 0;
@@ -524,8 +529,8 @@ struct spline *parse_spline(struct parser *p)
 			s->v[i * 5 + c] = c < v.n ? v.v[c] : 0;
 		s->n++;
 	}
-	if (s->dim == 1)
-		s->dim = 3; /* POV-Ray splines of floats give vectors */
+	if (s->dim < 2)
+		s->dim = 2; /* a spline of floats gives 2-component vectors */
 	if (s->kind == SPLINE_NATURAL)
 		natural_prepare(s);
 	parse_release(p, slot);

@@ -12,7 +12,8 @@
 #include <setjmp.h>
 
 /* Limits. Nesting of includes and macro calls shares MAX_FRAMES. */
-enum { MAX_FRAMES = 1000, MAX_INCLUDE_DEPTH = 100, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256, MAX_CONDS = 4096 };
+enum { MAX_FRAMES = 1000, MAX_INCLUDE_DEPTH = 100, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256, MAX_CONDS = 4096,
+       MAX_DIRECTIVE_DEPTH = 256 };
 
 enum frame_kind { FRAME_FILE, FRAME_MACRO };
 
@@ -71,6 +72,7 @@ struct parser {
 	struct symtab *globals;
 	double version;
 	int expr_depth;
+	int directive_depth;         /* directives inside directives' operands */
 
 	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */
 	int debug_len;               /* its stream at 80 columns */

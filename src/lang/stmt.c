@@ -27,7 +27,7 @@ static const struct value *ident_value(struct parser *p)
 		return NULL;
 	const struct value *v = parse_lookup(p, t->str);
 	if (!v)
-		parse_error(p, "undefined identifier '%s'", t->str);
+		parse_undefined(p, t->str);
 	return v;
 }
 

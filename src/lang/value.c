@@ -92,6 +92,7 @@ struct value val_copy(const struct value *src)
 	default: break;
 	}
 	v.owner = 0;
+	v.deprecated = NULL;
 	return v;
 }
 
