@@ -95,19 +95,7 @@ bool parse_defined(struct parser *p)
 	if (!v || v->kind != VAL_ARRAY || !parse_is(p, TOK_LBRACKET))
 		return v != NULL;
 	/* A[i]...: is that element set? */
-	const struct array *a = v->arr;
-	size_t idx = 0;
-	for (int d = 0; d < a->ndims && parse_accept(p, TOK_LBRACKET); d++) {
-		struct value e = parse_expression(p);
-		parse_need_float(p, &e, "an array index");
-		double i = trunc(e.v[0]);
-		if (i < 0 || i >= a->dims[d])
-			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
-			               i, d + 1, name, a->dims[d]);
-		parse_expect(p, TOK_RBRACKET);
-		idx = idx * (size_t)a->dims[d] + (size_t)i;
-	}
-	(void)at;
+	size_t idx = parse_array_index(p, v->arr, name, at);
 	v = parse_lookup(p, name);
 	return v && v->kind == VAL_ARRAY && idx < v->arr->count && v->arr->elems[idx].kind != VAL_NONE;
 }

@@ -421,8 +421,7 @@ static size_t byref_end(const struct frame *f)
 	return 0;
 }
 
-/* '[' INT ']' for each dimension of a: the flat index of the element. */
-static size_t array_index(struct parser *p, const struct array *a, const char *name, struct srcpos at)
+size_t parse_array_index(struct parser *p, const struct array *a, const char *name, struct srcpos at)
 {
 	int ndims = a->ndims, dims[ARRAY_MAX_DIMS];
 	memcpy(dims, a->dims, sizeof dims);
@@ -474,7 +473,7 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 					struct symtab *t = parse_alias_target(p, &target);
 					size_t idx = ALIAS_WHOLE;
 					if (after != f->pos)
-						idx = array_index(p, b->arr, target, apos);
+						idx = parse_array_index(p, b->arr, target, apos);
 					v.kind = VAL_ALIAS;
 					v.alias.table = t;
 					v.alias.name = target;
@@ -571,7 +570,7 @@ static void declare_element(struct parser *p, const char *name, bool local, stru
 		parse_error_at(p, at, "'%s' is not declared, so it has no elements to assign", name);
 	if (av->kind != VAL_ARRAY)
 		parse_error_at(p, at, "'%s' is a %s, not an array", name, val_kind_name(av->kind));
-	size_t idx = array_index(p, av->arr, name, at);
+	size_t idx = parse_array_index(p, av->arr, name, at);
 	parse_expect(p, TOK_EQ);
 	struct value v = parse_rvalue(p);
 	bool numeric = val_is_numeric(&v);

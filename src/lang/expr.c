@@ -398,18 +398,7 @@ static struct value ident_value_copy(struct parser *p, const struct value *v, st
 /* '[' INT ']' ... : the element of an array an index list selects. */
 static const struct value *array_element(struct parser *p, const struct array *a, const char *name, struct srcpos at)
 {
-	size_t idx = 0;
-	for (int d = 0; d < a->ndims; d++) {
-		parse_expect(p, TOK_LBRACKET);
-		struct value e = parse_expression(p);
-		need_float(p, &e, "an array index");
-		double i = trunc(e.v[0]);
-		if (i < 0 || i >= a->dims[d])
-			parse_error_at(p, e.pos, "index %g is out of range for dimension %d of array '%s' (size %d)",
-			               i, d + 1, name, a->dims[d]);
-		parse_expect(p, TOK_RBRACKET);
-		idx = idx * (size_t)a->dims[d] + (size_t)i;
-	}
+	size_t idx = parse_array_index(p, a, name, at);
 	const struct value *el = &a->elems[idx];
 	if (el->kind == VAL_NONE)
 		parse_error_at(p, at, "element of array '%s' used before it was given a value", name);

@@ -156,6 +156,10 @@ const char *parse_string(struct parser *p);
  * longer than a vector); returns how many were read. */
 int parse_number_list(struct parser *p, double *out, int max);
 
+/* '[' INT ']' for each dimension of array a (named name, at at): the
+ * flat index of the element, range-checked (directive.c). */
+size_t parse_array_index(struct parser *p, const struct array *a, const char *name, struct srcpos at);
+
 /* Built-in functions (builtin.c): is k one, and call it (the current
  * token is its name). */
 bool builtin_is_function(enum kw k);
