@@ -108,13 +108,6 @@ static double f_int(double a) { return trunc(a) + 0.0; /* never -0 */ }
 static double f_mod(double a, double b) { return fmod(a, b); }
 static double f_div(double a, double b) { return trunc(a / b); }
 
-struct math_fn {
-	enum kw kw;
-	int nargs;
-	double (*f1)(double);
-	double (*f2)(double, double);
-};
-
 static const struct math_fn math_fns[] = {
 	{KW_ABS, 1, fabs, NULL}, {KW_ACOS, 1, acos, NULL}, {KW_ACOSH, 1, acosh, NULL},
 	{KW_ASIN, 1, asin, NULL}, {KW_ASINH, 1, asinh, NULL}, {KW_ATAN, 1, atan, NULL},
@@ -128,7 +121,7 @@ static const struct math_fn math_fns[] = {
 	{KW_DIV, 2, NULL, f_div},
 };
 
-static const struct math_fn *math_fn(enum kw k)
+const struct math_fn *builtin_math_fn(enum kw k)
 {
 	for (size_t i = 0; i < sizeof math_fns / sizeof math_fns[0]; i++)
 		if (math_fns[i].kw == k)
@@ -212,7 +205,7 @@ static struct value f_trace(struct parser *p, struct srcpos at)
 
 bool builtin_is_function(enum kw k)
 {
-	if (math_fn(k))
+	if (builtin_math_fn(k))
 		return true;
 	switch (k) {
 	case KW_MIN: case KW_MAX: case KW_BITWISE_AND: case KW_BITWISE_OR: case KW_BITWISE_XOR:
@@ -241,7 +234,7 @@ struct value builtin_call(struct parser *p)
 	}
 	lparen(p);
 	struct value r;
-	const struct math_fn *m = math_fn(k);
+	const struct math_fn *m = builtin_math_fn(k);
 	if (m) {
 		double a = arg_float(p, name), b = 0;
 		if (m->nargs == 2) {

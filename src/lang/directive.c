@@ -635,13 +635,7 @@ static void dir_undef(struct parser *p)
 	struct token id = parse_raw(p);
 	if (id.kind != TOK_IDENT)
 		raw_expected(p, &id, "an identifier after #undef");
-	bool found = false;
-	for (int i = p->nframes - 1; i >= 0 && !found; i--)
-		if (p->frames[i].locals)
-			found = sym_remove(p->frames[i].locals, id.str);
-	if (!found)
-		found = sym_remove(p->globals, id.str);
-	if (!found)
+	if (!parse_unbind(p, id.str))
 		parse_warning_at(p, id.pos, "#undef of '%s', which is not declared", id.str);
 }
 

@@ -452,8 +452,6 @@ static struct value parse_primary(struct parser *p)
 			parse_drop(p, &c);
 			c = el;
 		}
-		if (c.owner == 0 || c.kind == VAL_ARRAY)
-			return c;
 		if ((c.kind == VAL_FUNCTION || c.kind == VAL_SPLINE) && parse_peek_cont(p)->kind == TOK_LPAREN) {
 			struct value r;
 			if (c.kind == VAL_FUNCTION) {

@@ -124,10 +124,7 @@ void parse_fclose(struct parser *p)
 		fclose(v->file->fp);
 		v->file->fp = NULL;
 	}
-	for (int i = p->nframes - 1; i >= 0; i--)
-		if (p->frames[i].locals && sym_remove(p->frames[i].locals, id.str))
-			return;
-	sym_remove(p->globals, id.str);
+	parse_unbind(p, id.str);
 }
 
 static struct sdl_file *file_arg(struct parser *p, bool writing)
@@ -183,12 +180,8 @@ void parse_read(struct parser *p, struct srcpos at)
 				parse_advance(p);
 			}
 			struct value *fv = parse_lookup(p, fname);
-			if (fv && fv->kind == VAL_FILE) {
-				for (int i = p->nframes - 1; i >= 0; i--)
-					if (p->frames[i].locals && sym_remove(p->frames[i].locals, fname))
-						return;
-				sym_remove(p->globals, fname);
-			}
+			if (fv && fv->kind == VAL_FILE)
+				parse_unbind(p, fname);
 			return;
 		}
 		const struct token *it = &f->toks[f->pos];
@@ -230,10 +223,7 @@ void parse_read(struct parser *p, struct srcpos at)
 		 * file's identifier goes away now (POV-Ray's behaviour). */
 		if (f->pos >= f->ntoks || f->toks[f->pos].kind == TOK_EOF) {
 			parse_expect(p, TOK_RPAREN);
-			for (int i = p->nframes - 1; i >= 0; i--)
-				if (p->frames[i].locals && sym_remove(p->frames[i].locals, fname))
-					return;
-			sym_remove(p->globals, fname);
+			parse_unbind(p, fname);
 			return;
 		}
 	}

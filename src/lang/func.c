@@ -70,24 +70,6 @@ static int coord_param(struct fcomp *c, enum kw k)
 	return -1;
 }
 
-static double fdiv(double a, double b) { return trunc(a / b); }
-
-static const struct {
-	enum kw kw;
-	double (*f1)(double);
-	double (*f2)(double, double);
-} fn_math[] = {
-	{KW_ABS, fabs, NULL}, {KW_ACOS, acos, NULL}, {KW_ACOSH, acosh, NULL}, {KW_ASIN, asin, NULL},
-	{KW_ASINH, asinh, NULL}, {KW_ATAN, atan, NULL}, {KW_ATANH, atanh, NULL}, {KW_CEIL, ceil, NULL},
-	{KW_COS, cos, NULL}, {KW_COSH, cosh, NULL}, {KW_EXP, exp, NULL}, {KW_FLOOR, floor, NULL},
-	{KW_INT, trunc, NULL}, {KW_LN, log, NULL}, {KW_LOG, log10, NULL}, {KW_SIN, sin, NULL},
-	{KW_SINH, sinh, NULL}, {KW_SQRT, sqrt, NULL}, {KW_TAN, tan, NULL}, {KW_TANH, tanh, NULL},
-	{KW_ATAN2, NULL, atan2}, {KW_MOD, NULL, fmod}, {KW_POW, NULL, pow}, {KW_DIV, NULL, fdiv},
-};
-
-static double fdeg(double a) { return a * 180.0 / M_PI; }
-static double frad(double a) { return a * M_PI / 180.0; }
-
 /* '(' expr {',' expr} ')' compiled in order; returns the count. */
 static int c_args(struct fcomp *c)
 {
@@ -239,40 +221,29 @@ static void c_primary(struct fcomp *c)
 			emit(c, FN_SELECT, n, 0, 1 - n);
 			return;
 		}
-		case KW_DEGREES: case KW_RADIANS: {
-			parse_advance(p);
-			if (c_args(c) != 1)
-				parse_error_at(p, at, "%s() takes one argument", kw_names[k]);
-			struct fn_instr in;
-			memset(&in, 0, sizeof in);
-			in.op = FN_CALL1;
-			in.f1 = k == KW_DEGREES ? fdeg : frad;
-			fn_emit(c->f, in);
-			return;
-		}
 		default:
 			break;
 		}
-		for (size_t i = 0; i < sizeof fn_math / sizeof fn_math[0]; i++)
-			if (fn_math[i].kw == k) {
-				parse_advance(p);
-				int want = fn_math[i].f1 ? 1 : 2;
-				int n = c_args(c);
-				if (n != want)
-					parse_error_at(p, at, "%s() takes %d argument%s, not %d", kw_names[k], want, want == 1 ? "" : "s", n);
-				struct fn_instr in;
-				memset(&in, 0, sizeof in);
-				if (want == 1) {
-					in.op = FN_CALL1;
-					in.f1 = fn_math[i].f1;
-				} else {
-					in.op = FN_CALL2;
-					in.f2 = fn_math[i].f2;
-					c->depth--;
-				}
-				fn_emit(c->f, in);
-				return;
+		const struct math_fn *m = builtin_math_fn(k);
+		if (m) {
+			parse_advance(p);
+			int n = c_args(c);
+			if (n != m->nargs)
+				parse_error_at(p, at, "%s() takes %d argument%s, not %d", kw_names[k], m->nargs,
+				               m->nargs == 1 ? "" : "s", n);
+			struct fn_instr in;
+			memset(&in, 0, sizeof in);
+			if (m->nargs == 1) {
+				in.op = FN_CALL1;
+				in.f1 = m->f1;
+			} else {
+				in.op = FN_CALL2;
+				in.f2 = m->f2;
+				c->depth--;
 			}
+			fn_emit(c->f, in);
+			return;
+		}
 		break;
 	}
 	default:

@@ -454,6 +454,14 @@ void parse_undefined(struct parser *p, const char *name)
 	parse_error(p, "undefined identifier '%s'", name);
 }
 
+bool parse_unbind(struct parser *p, const char *name)
+{
+	for (int i = p->nframes - 1; i >= 0; i--)
+		if (p->frames[i].locals && sym_remove(p->frames[i].locals, name))
+			return true;
+	return sym_remove(p->globals, name);
+}
+
 struct symtab *parse_local_table(struct parser *p)
 {
 	for (int i = p->nframes - 1; i >= 0; i--)

@@ -124,6 +124,8 @@ void parse_assign(struct parser *p, const char *name, bool local, struct value v
 /* The table holding the binding that NAME refers to for a by-reference
  * parameter (aliases followed); *name becomes the name there. */
 struct symtab *parse_alias_target(struct parser *p, const char **name);
+/* Remove the innermost binding of name (#undef); false if there is none. */
+bool parse_unbind(struct parser *p, const char *name);
 /* The innermost #local table (the globals in the main file). */
 struct symtab *parse_local_table(struct parser *p);
 
@@ -163,6 +165,15 @@ size_t parse_array_index(struct parser *p, const struct array *a, const char *na
 /* Built-in functions (builtin.c): is k one, and call it (the current
  * token is its name). */
 bool builtin_is_function(enum kw k);
+/* The float functions of one or two floats (sin, pow, degrees, ...),
+ * shared by expressions and function bodies. */
+struct math_fn {
+	enum kw kw;
+	int nargs;
+	double (*f1)(double);
+	double (*f2)(double, double);
+};
+const struct math_fn *builtin_math_fn(enum kw k);
 /* IDENT or IDENT[i]...: is it declared (the element set)? Reads the
  * identifier and its indices. */
 bool parse_defined(struct parser *p);
