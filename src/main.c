@@ -208,6 +208,7 @@ int main(int argc, char **argv)
 		gamma = 0;
 	double t1 = now();
 	prep = prepare_scene(scene);
+	prep->signature = opt.signature;
 	double t2 = now();
 
 	int row0 = opt.start_row >= 0 ? options_bound(opt.start_row, opt.height, false) : 0;

@@ -59,6 +59,7 @@ void options_usage(FILE *out)
 "\n"
 "  -q, --quiet    print only #debug/#warning text and errors\n"
 "  --io-unrestricted  let #fopen use absolute paths and '..'\n"
+"  --signature    flat colour per object, no lighting (checks intersection)\n"
 "  --threads N    as +WTN\n"
 "  --output FILE  as +OFILE\n"
 "  -h, --help     show this help\n"
@@ -475,6 +476,10 @@ int options_parse(struct options *o, int argc, char **argv, FILE *err)
 		}
 		if (strcmp(a, "--io-unrestricted") == 0) {
 			o->io_unrestricted = true;
+			continue;
+		}
+		if (strcmp(a, "--signature") == 0) {
+			o->signature = true;
 			continue;
 		}
 		if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {

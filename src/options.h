@@ -26,6 +26,7 @@ struct options {
 	bool quiet;             /* -q: only #debug/#warning text and errors */
 	char *debug_file;       /* +GDfile: #debug text goes to this file */
 	bool io_unrestricted;   /* --io-unrestricted: #fopen may use any path */
+	bool signature;         /* --signature: flat colour per object, no shading */
 	struct parse_define *defines;
 	size_t ndefines;
 	double start_row, end_row, start_col, end_col; /* as given; < 0: unset */

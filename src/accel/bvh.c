@@ -169,7 +169,8 @@ static vec3 reciprocal(vec3 d)
 	return v3(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
 }
 
-bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h)
+bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h,
+                   const struct object **top)
 {
 	if (b->nobjs == 0)
 		return false;
@@ -187,9 +188,13 @@ bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double
 				const struct object *o = b->objs[i];
 				if (o->flags & skip)
 					continue;
-				if (object_intersect(o, r, tmin, tmax, h)) {
-					tmax = h->t;
+				struct hit th;
+				if (object_intersect(o, r, tmin, tmax, &th)) {
+					*h = th;
+					tmax = th.t;
 					found = true;
+					if (top)
+						*top = o;
 				}
 			}
 		} else {
@@ -229,6 +234,33 @@ bool bvh_occluded(const struct bvh *b, const struct ray *r, double tmin, double 
 					*blocker = o;
 					return true;
 				}
+			}
+		} else {
+			stack[sp++] = nd->first + 1;
+			stack[sp++] = nd->first;
+		}
+	}
+	return false;
+}
+
+bool bvh_inside_any(const struct bvh *b, vec3 p, const struct object *exclude)
+{
+	if (b->nobjs == 0)
+		return false;
+	uint32_t stack[STACK_MAX];
+	int sp = 0;
+	stack[sp++] = 0;
+	while (sp > 0) {
+		const struct bvh_node *nd = &b->nodes[stack[--sp]];
+		const struct aabb *bx = &nd->box;
+		if (p.x < bx->lo.x || p.x > bx->hi.x || p.y < bx->lo.y || p.y > bx->hi.y || p.z < bx->lo.z ||
+		    p.z > bx->hi.z)
+			continue;
+		if (nd->count) {
+			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+				const struct object *o = b->objs[i];
+				if (o != exclude && object_inside(o, p))
+					return true;
 			}
 		} else {
 			stack[sp++] = nd->first + 1;

@@ -13,4 +13,24 @@ struct object *plane_new(vec3 normal, double distance, struct srcpos pos);
 /* box { corner1, corner2 } in any order. */
 struct object *box_new(vec3 c1, vec3 c2, struct srcpos pos);
 
+/* cylinder { base, cap, radius [open] }. */
+struct object *cylinder_new(vec3 base, vec3 cap, double radius, bool open, struct srcpos pos);
+/* cone { base, base_radius, cap, cap_radius [open] }. */
+struct object *cone_new(vec3 base, double r0, vec3 cap, double r1, bool open, struct srcpos pos);
+/* disc { center, normal, radius [, hole_radius] }. */
+struct object *disc_new(vec3 center, vec3 normal, double radius, double hole, struct srcpos pos);
+/* torus { major, minor [sturm] }, in the xz plane around the y axis. */
+struct object *torus_new(double major, double minor, bool sturm, struct srcpos pos);
+/* quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }:
+ * A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0. */
+struct object *quadric_new(vec3 abc, vec3 def, vec3 ghi, double j, struct srcpos pos);
+/* poly { order, <coefficients> } for order 2..7, and cubic (3) and quartic
+ * (4): coef has (order+1)(order+2)(order+3)/6 entries in POV-Ray's order. */
+struct object *poly_new(int order, const double *coef, bool sturm, struct srcpos pos);
+/* superellipsoid { <e, n> }. */
+struct object *superellipsoid_new(double e, double n, struct srcpos pos);
+/* triangle { a, b, c } and smooth_triangle { a, na, b, nb, c, nc }. */
+struct object *triangle_new(vec3 a, vec3 b, vec3 c, struct srcpos pos);
+struct object *smooth_triangle_new(vec3 a, vec3 na, vec3 b, vec3 nb, vec3 c, vec3 nc, struct srcpos pos);
+
 #endif

@@ -522,3 +522,19 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	free(p);
 	return rc;
 }
+
+const struct value *parse_ident_value(struct parser *p)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_IDENT)
+		return NULL;
+	const struct value *v = parse_lookup(p, t->str);
+	if (!v)
+		parse_undefined(p, t->str);
+	return v;
+}
+
+void parse_wrong_kind(struct parser *p, const struct value *v, const char *want)
+{
+	parse_error(p, "'%s' is a %s, not %s", parse_peek(p)->str, val_kind_name(v->kind), want);
+}

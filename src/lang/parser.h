@@ -113,6 +113,11 @@ void parse_release(struct parser *p, int slot);
 
 /* "undefined identifier 'X'", suggesting the nearest declared name. */
 _Noreturn void parse_undefined(struct parser *p, const char *name);
+/* If the current token is an identifier, its value (an undefined one is
+ * an error); otherwise NULL. Does not consume it. */
+const struct value *parse_ident_value(struct parser *p);
+/* "'X' is a K, not WANT" about the identifier at the current token. */
+_Noreturn void parse_wrong_kind(struct parser *p, const struct value *v, const char *want);
 /* Symbols: the innermost binding of name (aliases followed), or NULL. */
 struct value *parse_lookup(struct parser *p, const char *name);
 /* The value slot #declare NAME (local: #local NAME) assigns: the
@@ -209,6 +214,30 @@ void parse_fopen(struct parser *p, struct srcpos at);
 void parse_fclose(struct parser *p);
 void parse_read(struct parser *p, struct srcpos at);
 void parse_write(struct parser *p);
+
+/* Textures (stmt.c): read into what they are given. parse_texture
+ * replaces *tex; parse_private_texture makes *tex one this holder may
+ * change alone (created from the #default texture if NULL) and returns it.
+ * parse_free_texture_holder frees a heap `struct texture *` holder and its
+ * reference (for parse_own). */
+void parse_texture(struct parser *p, struct texture **tex);
+void parse_pigment(struct parser *p, struct pigment *pig);
+void parse_finish(struct parser *p, struct finish *f);
+struct texture *parse_private_texture(struct parser *p, struct texture **tex);
+void parse_free_texture_holder(void *holder);
+
+/* Objects and transformations (objects.c). */
+/* Does keyword k begin an object statement? */
+bool parse_is_object_start(enum kw k);
+/* An object statement at the current token; scene_level applies the
+ * #default texture to what has none (declared objects get it when they
+ * are placed). The caller owns the result. */
+struct object *parse_object(struct parser *p, bool scene_level);
+/* A transformation (translate, rotate, scale, matrix, transform) at the
+ * current token into *out; false if there is none. */
+bool parse_transform_item(struct parser *p, struct xform *out);
+/* `transform` { ... } | IDENT as a value; the caller owns the result. */
+struct xform *parse_transform_value(struct parser *p);
 
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);

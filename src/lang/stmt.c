@@ -11,86 +11,20 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void free_object_cb(void *o) { object_free(o); }
-static void free_texture_holder_cb(void *h)
+void parse_free_texture_holder(void *h)
 {
 	texture_unref(*(struct texture **)h);
 	free(h);
 }
 
-/* If the current token is an identifier, its value (an undefined one is
- * an error); otherwise NULL. Does not consume it. */
-static const struct value *ident_value(struct parser *p)
-{
-	const struct token *t = parse_peek(p);
-	if (t->kind != TOK_IDENT)
-		return NULL;
-	const struct value *v = parse_lookup(p, t->str);
-	if (!v)
-		parse_undefined(p, t->str);
-	return v;
-}
-
-static void wrong_kind(struct parser *p, const struct value *v, const char *want)
-{
-	parse_error(p, "'%s' is a %s, not %s", parse_peek(p)->str, val_kind_name(v->kind), want);
-}
-
-/* ---- transforms ---- */
-
-/* transform_item := translate VECTOR | rotate VECTOR | scale VECTOR
- *                 | matrix < 12 floats > */
-static bool parse_transform_item(struct parser *p, struct xform *out)
-{
-	const struct token *t = parse_peek(p);
-	if (t->kind != TOK_KEYWORD)
-		return false;
-	struct srcpos at = t->pos;
-	switch (t->kw) {
-	case KW_TRANSLATE:
-		parse_advance(p);
-		*out = xform_translate(parse_vector(p));
-		return true;
-	case KW_ROTATE:
-		parse_advance(p);
-		*out = xform_rotate(parse_vector(p));
-		return true;
-	case KW_SCALE: {
-		parse_advance(p);
-		vec3 s = parse_vector(p);
-		/* POV-Ray turns a zero scale factor into 1, with a warning. */
-		double *c[3] = {&s.x, &s.y, &s.z};
-		for (int i = 0; i < 3; i++)
-			if (*c[i] == 0) {
-				parse_warning_at(p, at, "scale by 0 changed to scale by 1");
-				*c[i] = 1;
-			}
-		*out = xform_scale(s);
-		return true;
-	}
-	case KW_MATRIX: {
-		parse_advance(p);
-		double m[12];
-		if (parse_number_list(p, m, 12) != 12)
-			parse_error_at(p, at, "a matrix needs exactly 12 numbers");
-		*out = xform_matrix(m);
-		if (mat_is_identity(&out->inv) && !mat_is_identity(&out->fwd))
-			parse_error_at(p, at, "this matrix cannot be inverted (it flattens space)");
-		return true;
-	}
-	default:
-		return false;
-	}
-}
-
 /* ---- textures ---- */
 
 /* pigment := pigment '{' [IDENT] [color] '}' */
-static void parse_pigment(struct parser *p, struct pigment *pig)
+void parse_pigment(struct parser *p, struct pigment *pig)
 {
 	parse_advance(p); /* pigment */
 	parse_expect(p, TOK_LBRACE);
-	const struct value *v = ident_value(p);
+	const struct value *v = parse_ident_value(p);
 	if (v && v->kind == VAL_PIGMENT) {
 		*pig = *v->pig;
 		parse_advance(p);
@@ -120,14 +54,14 @@ static rgb parse_rgb_or_float(struct parser *p)
 }
 
 /* finish := finish '{' [IDENT] { finish_item } '}' */
-static void parse_finish(struct parser *p, struct finish *f)
+void parse_finish(struct parser *p, struct finish *f)
 {
 	parse_advance(p); /* finish */
 	parse_expect(p, TOK_LBRACE);
-	const struct value *v = ident_value(p);
+	const struct value *v = parse_ident_value(p);
 	if (v) {
 		if (v->kind != VAL_FINISH)
-			wrong_kind(p, v, "a finish");
+			parse_wrong_kind(p, v, "a finish");
 		*f = *v->fin;
 		parse_advance(p);
 	}
@@ -165,8 +99,7 @@ static void parse_finish(struct parser *p, struct finish *f)
 	}
 }
 
-/* Make *tex a texture this object may modify alone. */
-static struct texture *private_texture(struct parser *p, struct texture **tex)
+struct texture *parse_private_texture(struct parser *p, struct texture **tex)
 {
 	if (!*tex)
 		*tex = p->default_tex ? texture_copy(p->default_tex) : texture_new();
@@ -180,14 +113,14 @@ static struct texture *private_texture(struct parser *p, struct texture **tex)
 
 /* texture := texture '{' [IDENT] { pigment | finish | transform } '}'
  * Reads into *tex (created or made private as needed). */
-static void parse_texture(struct parser *p, struct texture **tex)
+void parse_texture(struct parser *p, struct texture **tex)
 {
 	parse_advance(p); /* texture */
 	parse_expect(p, TOK_LBRACE);
-	const struct value *v = ident_value(p);
+	const struct value *v = parse_ident_value(p);
 	if (v) {
 		if (v->kind != VAL_TEXTURE)
-			wrong_kind(p, v, "a texture");
+			parse_wrong_kind(p, v, "a texture");
 		texture_unref(*tex);
 		*tex = texture_ref(v->tex);
 		parse_advance(p);
@@ -200,119 +133,12 @@ static void parse_texture(struct parser *p, struct texture **tex)
 	while (!parse_accept(p, TOK_RBRACE)) {
 		struct xform t;
 		if (parse_is_kw(p, KW_PIGMENT))
-			parse_pigment(p, &private_texture(p, tex)->pigment);
+			parse_pigment(p, &parse_private_texture(p, tex)->pigment);
 		else if (parse_is_kw(p, KW_FINISH))
-			parse_finish(p, &private_texture(p, tex)->finish);
+			parse_finish(p, &parse_private_texture(p, tex)->finish);
 		else if (!parse_transform_item(p, &t))
 			parse_expected(p, "pigment, finish, a transformation or '}'");
 	}
-}
-
-/* ---- objects ---- */
-
-/* object_modifier := texture | pigment | finish | transform_item
- *   | no_shadow | no_image | no_reflection | hollow [bool]
- *   | double_illuminate | inverse */
-static bool parse_object_modifier(struct parser *p, struct object *o)
-{
-	struct xform t;
-	if (parse_transform_item(p, &t)) {
-		object_transform(o, &t);
-		return true;
-	}
-	const struct token *tk = parse_peek(p);
-	if (tk->kind != TOK_KEYWORD)
-		return false;
-	switch (tk->kw) {
-	case KW_TEXTURE: parse_texture(p, &o->tex); return true;
-	case KW_PIGMENT: parse_pigment(p, &private_texture(p, &o->tex)->pigment); return true;
-	case KW_FINISH: parse_finish(p, &private_texture(p, &o->tex)->finish); return true;
-	case KW_NO_SHADOW: parse_advance(p); o->flags |= OBJ_NO_SHADOW; return true;
-	case KW_NO_IMAGE: parse_advance(p); o->flags |= OBJ_NO_IMAGE; return true;
-	case KW_NO_REFLECTION: parse_advance(p); o->flags |= OBJ_NO_REFLECTION; return true;
-	case KW_DOUBLE_ILLUMINATE: parse_advance(p); o->flags |= OBJ_DOUBLE_ILLUMINATE; return true;
-	case KW_INVERSE: parse_advance(p); o->flags ^= OBJ_INVERSE; return true;
-	case KW_HOLLOW:
-		parse_advance(p);
-		o->flags |= OBJ_HOLLOW;
-		if (parse_starts_expression(p) && parse_float(p) == 0)
-			o->flags &= ~(unsigned)OBJ_HOLLOW;
-		return true;
-	default:
-		return false;
-	}
-}
-
-/* The primitive's own arguments, after its '{'. */
-static struct object *parse_shape_args(struct parser *p, enum kw k, struct srcpos at)
-{
-	switch (k) {
-	case KW_SPHERE: {
-		/* sphere := sphere '{' VECTOR ',' FLOAT ... */
-		vec3 c = parse_vector(p);
-		parse_expect(p, TOK_COMMA);
-		double r = parse_float(p);
-		return sphere_new(c, r, at);
-	}
-	case KW_PLANE: {
-		/* plane := plane '{' VECTOR ',' FLOAT ... */
-		struct srcpos npos = parse_peek(p)->pos;
-		vec3 n = parse_vector(p);
-		if (v3_len(n) == 0)
-			parse_error_at(p, npos, "a plane's normal cannot be the zero vector");
-		parse_expect(p, TOK_COMMA);
-		double d = parse_float(p);
-		return plane_new(n, d, at);
-	}
-	case KW_BOX: {
-		/* box := box '{' VECTOR ',' VECTOR ... */
-		vec3 a = parse_vector(p);
-		parse_expect(p, TOK_COMMA);
-		vec3 b = parse_vector(p);
-		return box_new(a, b, at);
-	}
-	default:
-		return NULL;
-	}
-}
-
-static bool is_object_keyword(enum kw k)
-{
-	return k == KW_SPHERE || k == KW_PLANE || k == KW_BOX || k == KW_OBJECT;
-}
-
-/* object := (sphere | plane | box) '{' args { object_modifier } '}'
- *         | object '{' IDENT { object_modifier } '}'
- * Returns the new object, owned by the caller. */
-static struct object *parse_object(struct parser *p)
-{
-	const struct token *t = parse_peek(p);
-	enum kw k = (enum kw)t->kw;
-	struct srcpos at = t->pos;
-	parse_advance(p);
-	parse_expect(p, TOK_LBRACE);
-	struct object *o;
-	if (k == KW_OBJECT) {
-		const struct value *v = ident_value(p);
-		if (!v)
-			parse_expected(p, "an object identifier");
-		if (v->kind != VAL_OBJECT)
-			wrong_kind(p, v, "an object");
-		o = object_copy(v->obj);
-		o->pos = at;
-		parse_advance(p);
-	} else {
-		o = parse_shape_args(p, k, at);
-	}
-	int slot = parse_own(p, o, free_object_cb);
-	while (!parse_accept(p, TOK_RBRACE)) {
-		if (!parse_object_modifier(p, o))
-			parse_expected(p, "an object modifier or '}'");
-	}
-	if (!o->tex && p->default_tex)
-		o->tex = texture_ref(p->default_tex);
-	parse_release(p, slot);
-	return o;
 }
 
 /* ---- lights and camera ---- */
@@ -358,10 +184,10 @@ static void parse_camera(struct parser *p, struct camera *c)
 {
 	parse_advance(p);
 	parse_expect(p, TOK_LBRACE);
-	const struct value *v = ident_value(p);
+	const struct value *v = parse_ident_value(p);
 	if (v) {
 		if (v->kind != VAL_CAMERA)
-			wrong_kind(p, v, "a camera");
+			parse_wrong_kind(p, v, "a camera");
 		*c = *v->cam;
 		parse_advance(p);
 	}
@@ -475,9 +301,9 @@ void parse_default(struct parser *p)
 		if (parse_is_kw(p, KW_TEXTURE))
 			parse_texture(p, &p->default_tex);
 		else if (parse_is_kw(p, KW_PIGMENT))
-			parse_pigment(p, &private_texture(p, &p->default_tex)->pigment);
+			parse_pigment(p, &parse_private_texture(p, &p->default_tex)->pigment);
 		else if (parse_is_kw(p, KW_FINISH))
-			parse_finish(p, &private_texture(p, &p->default_tex)->finish);
+			parse_finish(p, &parse_private_texture(p, &p->default_tex)->finish);
 		else
 			parse_expected(p, "texture, pigment, finish or '}' in #default");
 	}
@@ -583,15 +409,19 @@ bool parse_item_value(struct parser *p, struct value *out)
 	enum kw k = (enum kw)t->kw;
 	memset(out, 0, sizeof *out);
 	out->pos = at;
-	if (is_object_keyword(k)) {
+	if (parse_is_object_start(k)) {
 		out->kind = VAL_OBJECT;
-		out->obj = parse_object(p);
+		out->obj = parse_object(p, false);
 		return true;
 	}
 	switch (k) {
 	case KW_ARRAY:
 		out->kind = VAL_ARRAY;
 		out->arr = parse_array(p);
+		return true;
+	case KW_TRANSFORM:
+		out->kind = VAL_TRANSFORM;
+		out->xf = parse_transform_value(p);
 		return true;
 	case KW_SPLINE:
 		out->kind = VAL_SPLINE;
@@ -627,7 +457,7 @@ bool parse_item_value(struct parser *p, struct value *out)
 		 * protected is a holder of the current pointer. */
 		struct texture **holder = calloc(1, sizeof *holder);
 		if (!holder) abort();
-		int slot = parse_own(p, holder, free_texture_holder_cb);
+		int slot = parse_own(p, holder, parse_free_texture_holder);
 		parse_texture(p, holder);
 		out->kind = VAL_TEXTURE;
 		out->tex = *holder;
@@ -669,8 +499,8 @@ void parse_statement(struct parser *p)
 	const struct token *t = parse_peek(p);
 	if (t->kind == TOK_KEYWORD) {
 		enum kw k = (enum kw)t->kw;
-		if (is_object_keyword(k)) {
-			struct object *o = parse_object(p);
+		if (parse_is_object_start(k)) {
+			struct object *o = parse_object(p, true);
 			scene_add_object(p->scene, o);
 			return;
 		}

@@ -24,6 +24,7 @@ struct prepared {
 	size_t nunbounded;
 	unsigned features;               /* enum feature */
 	int max_depth;                   /* max_trace_level */
+	bool signature;                  /* --signature: flat colour per primitive */
 };
 
 /* Prepare s for rendering. s must outlive the result. */

@@ -30,15 +30,17 @@ double trace_epsilon(vec3 p, vec3 from)
 
 bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h)
 {
-	bool found = bvh_intersect(p->bvh, r, tmin, tmax, skip, h);
+	bool found = bvh_intersect(p->bvh, r, tmin, tmax, skip, h, NULL);
 	if (found)
 		tmax = h->t;
 	for (size_t i = 0; i < p->nunbounded; i++) {
 		const struct object *o = p->unbounded[i];
 		if (o->flags & skip)
 			continue;
-		if (object_intersect(o, r, tmin, tmax, h)) {
-			tmax = h->t;
+		struct hit th;
+		if (object_intersect(o, r, tmin, tmax, &th)) {
+			*h = th;
+			tmax = th.t;
 			found = true;
 		}
 	}
@@ -77,6 +79,23 @@ static bool shadowed(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, double di
 	return false;
 }
 
+/* --signature: a flat colour for primitive number id, hues spread by the
+ * golden ratio so that neighbours in scene order differ clearly. */
+static rgb signature_color(unsigned id)
+{
+	double h = fmod((id + 1) * 0.6180339887498949, 1.0) * 6.0, s = 0.75, v = 0.95;
+	int i = (int)h;
+	double f = h - i, pp = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+	switch (i) {
+	case 0: return rgb_make(v, t, pp);
+	case 1: return rgb_make(q, v, pp);
+	case 2: return rgb_make(pp, v, t);
+	case 3: return rgb_make(pp, q, v);
+	case 4: return rgb_make(t, pp, v);
+	default: return rgb_make(v, pp, q);
+	}
+}
+
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)
 {
 	const struct prepared *p = tr->p;
@@ -89,6 +108,8 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 		return rgb_of(s->background);
 	}
 	*hit_anything = true;
+	if (p->signature)
+		return signature_color(h.obj->id);
 	vec3 dir = v3_norm(r->dir);
 	vec3 pt = v3_madd(r->org, r->dir, h.t);
 	vec3 n = object_normal(h.obj, pt, &h);
@@ -96,7 +117,9 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 		n = v3_neg(n); /* shade the side the ray sees */
 	double eps = trace_epsilon(pt, r->org);
 
-	const struct texture *tex = h.obj->tex;
+	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
+	if (!tex)
+		tex = h.obj->tex;
 	const struct finish *fin = &tex->finish;
 	rgb pig = rgb_of(tex->pigment.color);
 	rgb col = rgb_mul(rgb_mul(fin->ambient, s->gs.ambient_light), pig);

@@ -4,6 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* How many surfaces a clipped object may offer along one ray before the
+ * search gives up: a guard against endless loops on degenerate input,
+ * far above what any real shape produces. */
+enum { CLIP_MAX_CROSSINGS = 100000 };
+
 void object_init(struct object *o, const struct object_ops *ops, struct srcpos pos)
 {
 	o->ops = ops;
@@ -12,20 +17,78 @@ void object_init(struct object *o, const struct object_ops *ops, struct srcpos p
 	o->tex = NULL;
 	o->flags = 0;
 	o->bounds = aabb_empty();
+	o->clip = NULL;
+	o->bound = NULL;
 	o->pos = pos;
 	o->id = 0;
 }
 
 void object_transform(struct object *o, const struct xform *t)
 {
-	o->xf = xform_compose(t, &o->xf);
-	o->has_xf = !mat_is_identity(&o->xf.fwd);
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			object_transform(kids[i], t);
+	} else {
+		o->xf = xform_compose(t, &o->xf);
+		o->has_xf = !mat_is_identity(&o->xf.fwd);
+	}
+	if (o->clip)
+		object_transform(o->clip, t);
+	if (o->bound && o->bound != o->clip)
+		object_transform(o->bound, t);
+}
+
+void object_set_flags(struct object *o, unsigned flags)
+{
+	o->flags |= flags;
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			object_set_flags(kids[i], flags);
+	}
+}
+
+void object_fill_texture(struct object *o, struct texture *t)
+{
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			object_fill_texture(kids[i], t);
+	} else if (!o->tex) {
+		o->tex = texture_ref(t);
+	}
+}
+
+void object_prepare(struct object *o)
+{
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			object_prepare(kids[i]);
+	}
+	if (o->clip)
+		object_prepare(o->clip);
+	if (o->bound && o->bound != o->clip)
+		object_prepare(o->bound);
+	if (o->ops->prepare)
+		o->ops->prepare(o);
+	o->bounds = object_world_bounds(o);
 }
 
 struct object *object_copy(const struct object *o)
 {
 	struct object *c = o->ops->copy(o);
 	texture_ref(c->tex);
+	c->clip = o->clip ? object_copy(o->clip) : NULL;
+	if (o->bound == o->clip)
+		c->bound = c->clip;
+	else
+		c->bound = o->bound ? object_copy(o->bound) : NULL;
 	return c;
 }
 
@@ -33,23 +96,56 @@ void object_free(struct object *o)
 {
 	if (!o) return;
 	texture_unref(o->tex);
+	if (o->bound != o->clip)
+		object_free(o->bound);
+	object_free(o->clip);
 	if (o->ops->destroy)
 		o->ops->destroy(o);
 	free(o);
 }
 
+int object_hits_from_roots(const struct object *o, const double *t, int n, struct hit *out, int max)
+{
+	if (n > max)
+		n = max;
+	for (int i = 0; i < n; i++) {
+		out[i].t = t[i];
+		out[i].part = i;
+		out[i].obj = o;
+	}
+	return n;
+}
+
+/* The closest hit of the object's own surface, ignoring clip and bound. */
+static bool surface_hit(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
+{
+	h->obj = o; /* CSG replaces it with the leaf it hit */
+	if (!o->has_xf)
+		return o->ops->intersect(o, r, tmin, tmax, h);
+	struct ray lr = {mat_point(&o->xf.inv, r->org), mat_dir(&o->xf.inv, r->dir)};
+	return o->ops->intersect(o, &lr, tmin, tmax, h);
+}
+
 bool object_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
 {
-	bool hit;
-	if (o->has_xf) {
-		struct ray lr = {mat_point(&o->xf.inv, r->org), mat_dir(&o->xf.inv, r->dir)};
-		hit = o->ops->intersect(o, &lr, tmin, tmax, h);
-	} else {
-		hit = o->ops->intersect(o, r, tmin, tmax, h);
+	if (o->bound) {
+		/* A ray that neither starts inside the bound nor crosses it in the
+		 * interval cannot reach the object. */
+		struct hit bh;
+		vec3 start = v3_madd(r->org, r->dir, tmin);
+		if (!object_inside(o->bound, start) && !object_intersect(o->bound, r, tmin, tmax, &bh))
+			return false;
 	}
-	if (hit)
-		h->obj = o;
-	return hit;
+	if (!o->clip)
+		return surface_hit(o, r, tmin, tmax, h);
+	for (int i = 0; i < CLIP_MAX_CROSSINGS; i++) {
+		if (!surface_hit(o, r, tmin, tmax, h))
+			return false;
+		if (object_inside(o->clip, v3_madd(r->org, r->dir, h->t)))
+			return true;
+		tmin = h->t;
+	}
+	return false;
 }
 
 vec3 object_normal(const struct object *o, vec3 p, const struct hit *h)
@@ -65,13 +161,33 @@ bool object_inside(const struct object *o, vec3 p)
 {
 	vec3 lp = o->has_xf ? mat_point(&o->xf.inv, p) : p;
 	bool in = o->ops->inside(o, lp);
-	return (o->flags & OBJ_INVERSE) ? !in : in;
+	if (o->flags & OBJ_INVERSE)
+		in = !in;
+	if (in && o->clip)
+		in = object_inside(o->clip, p);
+	return in;
 }
 
 struct aabb object_world_bounds(const struct object *o)
 {
+	const struct aabb inf = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+	if (o->flags & OBJ_INVERSE)
+		return inf;
 	struct aabb b = o->ops->bounds(o);
-	if (!aabb_is_finite(b) || (o->flags & OBJ_INVERSE))
-		return (struct aabb){{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
-	return o->has_xf ? mat_bounds(&o->xf.fwd, b) : b;
+	if (aabb_is_finite(b) && o->has_xf)
+		b = mat_bounds(&o->xf.fwd, b);
+	else if (!aabb_is_finite(b))
+		b = inf;
+	/* A clip or a bound limits the object to its own box. */
+	const struct object *lim[2] = {o->clip, o->bound};
+	for (int i = 0; i < 2; i++) {
+		if (!lim[i])
+			continue;
+		struct aabb c = object_world_bounds(lim[i]);
+		b.lo = v3_max(b.lo, c.lo);
+		b.hi = v3_min(b.hi, c.hi);
+	}
+	if (b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
+		b.lo = b.hi = v3_min(b.lo, b.hi); /* nothing can be hit: any point will do */
+	return b;
 }

@@ -21,6 +21,7 @@ struct hit {
 	double t;
 	const struct object *obj;
 	int part;
+	double u, v; /* primitive-specific (a triangle's barycentrics) */
 };
 
 enum object_flag {
@@ -46,6 +47,18 @@ struct object_ops {
 	vec3 (*normal)(const struct object *o, vec3 p, const struct hit *h);
 	/* Object-space bounds; infinite components for unbounded shapes. */
 	struct aabb (*bounds)(const struct object *o);
+	/* POV-Ray's uv coordinates of the object-space point p for hit h;
+	 * NULL for primitives that have none. */
+	bool (*uv)(const struct object *o, vec3 p, const struct hit *h, double uv[2]);
+	/* The texture at hit h when the primitive has several (mesh triangles);
+	 * NULL: the object's own. Returns NULL to mean the object's own. */
+	struct texture *(*texture_at)(const struct object *o, const struct hit *h);
+	/* CSG only (NULL elsewhere): the children, for operations that walk
+	 * the tree (transforms, textures, flags, prepare). */
+	size_t (*children)(struct object *o, struct object ***kids);
+	/* Build what the object needs before rendering (CSG: its own BVH),
+	 * after its children have been prepared; may be NULL. */
+	void (*prepare)(struct object *o);
 	/* A deep copy of the primitive (shared buffers referenced). */
 	struct object *(*copy)(const struct object *o);
 	/* Free what the primitive owns beyond the header (may be NULL). */
@@ -59,19 +72,36 @@ struct object {
 	struct texture *tex;      /* one reference; NULL until the parser sets it */
 	unsigned flags;           /* enum object_flag */
 	struct aabb bounds;       /* world-space bounds, set by prepare */
+	struct object *clip;      /* clipped_by: hits count only inside it; owned */
+	struct object *bound;     /* bounded_by: rays that miss it skip the object; owned */
 	struct srcpos pos;        /* where the statement began */
 	unsigned id;              /* creation order, for stable output */
 };
 
 /* Initialise the header of a freshly allocated primitive. */
 void object_init(struct object *o, const struct object_ops *ops, struct srcpos pos);
-/* Apply a transform after the object's current one. */
+/* Apply a transform after the object's current one (to a CSG's children,
+ * and to clipped_by and bounded_by objects). */
 void object_transform(struct object *o, const struct xform *t);
+/* Set flags on o and, for CSG, on every descendant. */
+void object_set_flags(struct object *o, unsigned flags);
+/* Give t (a new reference each) to o, or for CSG to every descendant
+ * that has no texture yet. */
+void object_fill_texture(struct object *o, struct texture *t);
+/* Prepare o and everything below it: world bounds in o->bounds, CSG
+ * hierarchies. Call after the last transform. */
+void object_prepare(struct object *o);
 /* Deep copy: the primitive, its transform and a new reference to its texture. */
 struct object *object_copy(const struct object *o);
 void object_free(struct object *o);
 
-/* World-space closest hit: carries r into object space when needed. */
+/* all_hits from the ascending roots t[0..n) of a primitive already cut to
+ * its interval: fills out (at most max), part = the root's index. */
+int object_hits_from_roots(const struct object *o, const double *t, int n, struct hit *out, int max);
+
+/* World-space closest hit: carries r into object space when needed,
+ * honours clipped_by and bounded_by. h->obj is the primitive hit (a leaf,
+ * for CSG). */
 bool object_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h);
 /* World-space unit normal at world point p for hit h. */
 vec3 object_normal(const struct object *o, vec3 p, const struct hit *h);

@@ -1,2 +1,3 @@
-// expect: 2:20: expected ',', found number 1
-sphere { <0, 0, 0> 1 }
+// expect: 3:16: expected ',' or '>' in vector, found number 0
+// POV-Ray's object arguments need no commas, but a vector's do.
+sphere { <0, 0 0>, 1 }

@@ -19,46 +19,9 @@
 #include <stdlib.h>
 
 #include "testutil.h"
+#include "shapetest.h"
 
 static const struct srcpos nopos = {0, 0, 0};
-
-static struct ray mkray(vec3 org, vec3 dir)
-{
-	struct ray r = {org, dir};
-	return r;
-}
-
-/* The closest hit in (tmin, inf), failing the test on a miss. */
-static struct hit must_hit(const struct object *o, vec3 org, vec3 dir, double tmin)
-{
-	struct ray r = mkray(org, dir);
-	struct hit h = {-1, NULL, -1};
-	if (!object_intersect(o, &r, tmin, INFINITY, &h))
-		fail_msg("ray <%g,%g,%g> + t<%g,%g,%g> missed the %s", org.x, org.y, org.z, dir.x, dir.y,
-		         dir.z, o->ops->name);
-	assert_ptr_equal(h.obj, o);
-	return h;
-}
-
-static bool hits(const struct object *o, vec3 org, vec3 dir, double tmin, double tmax)
-{
-	struct ray r = mkray(org, dir);
-	struct hit h;
-	return object_intersect(o, &r, tmin, tmax, &h);
-}
-
-/* The world normal at the hit, checked to be unit length. */
-static vec3 hit_normal(const struct object *o, vec3 org, vec3 dir, const struct hit *h)
-{
-	vec3 n = object_normal(o, v3_madd(org, dir, h->t), h);
-	assert_near(v3_len(n), 1, 1e-15);
-	return n;
-}
-
-static void transform(struct object *o, struct xform t)
-{
-	object_transform(o, &t);
-}
 
 /* ---- sphere ---- */
 
@@ -720,8 +683,8 @@ static void test_bvh_matches_brute_force(void **state)
 	for (uint32_t i = 0; i < 4000; i++) {
 		struct ray r = test_ray(i);
 		for (unsigned skip = 0; skip <= OBJ_NO_SHADOW; skip += OBJ_NO_SHADOW) {
-			struct hit hb = {0, NULL, -1}, hf = {0, NULL, -1};
-			bool fb = bvh_intersect(sc.bvh, &r, 1e-6, INFINITY, skip, &hb);
+			struct hit hb = {.t = 0, .part = -1}, hf = {.t = 0, .part = -1};
+			bool fb = bvh_intersect(sc.bvh, &r, 1e-6, INFINITY, skip, &hb, NULL);
 			bool ff = brute_closest(&sc, &r, 1e-6, INFINITY, skip, &hf);
 			if (fb != ff)
 				fail_msg("ray %u skip %u: bvh %s, brute force %s", i, skip, fb ? "hit" : "missed",
@@ -753,7 +716,7 @@ static void test_bvh_tmax_and_occluded(void **state)
 		unsigned skip = i % 2 ? OBJ_NO_SHADOW : 0;
 		/* Closest hit within a finite tmax. */
 		struct hit hb, hf;
-		bool fb = bvh_intersect(sc.bvh, &r, 1e-6, tmax, skip, &hb);
+		bool fb = bvh_intersect(sc.bvh, &r, 1e-6, tmax, skip, &hb, NULL);
 		bool ff = brute_closest(&sc, &r, 1e-6, tmax, skip, &hf);
 		assert_int_equal(fb, ff);
 		if (ff) {
@@ -789,7 +752,7 @@ static void test_bvh_small(void **state)
 	struct ray r = mkray(v3(0, 0, -5), v3(0, 0, 1));
 	struct hit h;
 	const struct object *blocker = NULL;
-	assert_false(bvh_intersect(b, &r, 0, INFINITY, 0, &h));
+	assert_false(bvh_intersect(b, &r, 0, INFINITY, 0, &h, NULL));
 	assert_false(bvh_occluded(b, &r, 0, INFINITY, 0, &blocker));
 	bvh_free(b);
 	/* One object, and one skipped by its flag. */
@@ -797,7 +760,7 @@ static void test_bvh_small(void **state)
 	s->bounds = object_world_bounds(s);
 	struct object *objs[1] = {s};
 	b = bvh_build(objs, 1);
-	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h));
+	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h, NULL));
 	assert_ptr_equal(h.obj, s);
 	assert_near(h.t, 4, 0);
 	assert_true(bvh_occluded(b, &r, 0, INFINITY, 0, &blocker));
@@ -805,8 +768,8 @@ static void test_bvh_small(void **state)
 	assert_false(bvh_occluded(b, &r, 0, 3.5, 0, &blocker));
 	s->flags |= OBJ_NO_SHADOW;
 	assert_false(bvh_occluded(b, &r, 0, INFINITY, OBJ_NO_SHADOW, &blocker));
-	assert_false(bvh_intersect(b, &r, 0, INFINITY, OBJ_NO_SHADOW, &h));
-	assert_true(bvh_intersect(b, &r, 0, INFINITY, OBJ_NO_IMAGE, &h));
+	assert_false(bvh_intersect(b, &r, 0, INFINITY, OBJ_NO_SHADOW, &h, NULL));
+	assert_true(bvh_intersect(b, &r, 0, INFINITY, OBJ_NO_IMAGE, &h, NULL));
 	bvh_free(b);
 	object_free(s);
 	/* Many objects sharing one centroid still build and trace. */
@@ -816,12 +779,12 @@ static void test_bvh_small(void **state)
 		same[i]->bounds = object_world_bounds(same[i]);
 	}
 	b = bvh_build(same, 20);
-	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h));
+	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h, NULL));
 	assert_ptr_equal(h.obj, same[19]);
 	assert_near(h.t, 5 - (0.1 + 0.05 * 19), 1e-15);
 	/* From the centre outward the smallest comes first. */
 	r = mkray(v3(0, 0, 0), v3(1, 0, 0));
-	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h));
+	assert_true(bvh_intersect(b, &r, 0, INFINITY, 0, &h, NULL));
 	assert_ptr_equal(h.obj, same[0]);
 	assert_near(h.t, 0.1, 1e-15);
 	bvh_free(b);

@@ -1,0 +1,835 @@
+/* objects.c: the object statements: every primitive, CSG, object
+ * references and the modifiers they share, and the transformations (which
+ * textures use too). Each grammar function names its production above it.
+ * The parser only calls the builder API (src/geom/shapes.h, csg.h,
+ * mesh.h); it knows nothing of how shapes are intersected. */
+#include "lang/parser.h"
+
+#include "geom/csg.h"
+#include "geom/mesh.h"
+#include "geom/shapes.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* POV-Ray's poly orders. */
+enum { POLY_MIN_ORDER = 2, POLY_MAX_ORDER = 7 };
+
+static void free_object_cb(void *o) { object_free(o); }
+
+/* ---- transformations ---- */
+
+/* A transform identifier at the current token, consumed. */
+static struct xform transform_ident(struct parser *p)
+{
+	const struct value *v = parse_ident_value(p);
+	if (!v)
+		parse_expected(p, "a transform identifier");
+	if (v->kind != VAL_TRANSFORM)
+		parse_wrong_kind(p, v, "a transform");
+	struct xform t = *v->xf;
+	parse_advance(p);
+	return t;
+}
+
+/* transform_block := '{' { IDENT | transform_item | inverse } '}'
+ * `inverse` inverts the whole block, wherever it stands (POV-Ray 3.7). */
+static struct xform parse_transform_block(struct parser *p)
+{
+	parse_expect(p, TOK_LBRACE);
+	struct xform acc = xform_identity();
+	bool inverse = false;
+	while (!parse_accept(p, TOK_RBRACE)) {
+		struct xform t;
+		if (parse_is(p, TOK_IDENT))
+			t = transform_ident(p);
+		else if (parse_accept_kw(p, KW_INVERSE)) {
+			inverse = true;
+			continue;
+		} else if (!parse_transform_item(p, &t))
+			parse_expected(p, "a transformation, a transform identifier, inverse or '}'");
+		acc = xform_compose(&t, &acc);
+	}
+	return inverse ? xform_invert(&acc) : acc;
+}
+
+/* transform_item := translate VECTOR | rotate VECTOR | scale VECTOR
+ *                 | matrix < 12 floats > | transform IDENT
+ *                 | transform transform_block */
+bool parse_transform_item(struct parser *p, struct xform *out)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	struct srcpos at = t->pos;
+	switch (t->kw) {
+	case KW_TRANSLATE:
+		parse_advance(p);
+		*out = xform_translate(parse_vector(p));
+		return true;
+	case KW_ROTATE:
+		parse_advance(p);
+		*out = xform_rotate(parse_vector(p));
+		return true;
+	case KW_SCALE: {
+		parse_advance(p);
+		vec3 s = parse_vector(p);
+		/* POV-Ray turns a zero scale factor into 1, with a warning. */
+		double *c[3] = {&s.x, &s.y, &s.z};
+		for (int i = 0; i < 3; i++)
+			if (*c[i] == 0) {
+				parse_warning_at(p, at, "scale by 0 changed to scale by 1");
+				*c[i] = 1;
+			}
+		*out = xform_scale(s);
+		return true;
+	}
+	case KW_MATRIX: {
+		parse_advance(p);
+		double m[12];
+		if (parse_number_list(p, m, 12) != 12)
+			parse_error_at(p, at, "a matrix needs exactly 12 numbers");
+		*out = xform_matrix(m);
+		if (mat_is_identity(&out->inv) && !mat_is_identity(&out->fwd))
+			parse_error_at(p, at, "this matrix cannot be inverted (it flattens space)");
+		return true;
+	}
+	case KW_TRANSFORM:
+		parse_advance(p);
+		*out = parse_is(p, TOK_LBRACE) ? parse_transform_block(p) : transform_ident(p);
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* transform '{' transform_block '}' as a value (after the keyword is
+ * seen; the caller owns the result). */
+struct xform *parse_transform_value(struct parser *p)
+{
+	parse_advance(p); /* transform */
+	struct xform *t = malloc(sizeof *t);
+	if (!t) abort();
+	int slot = parse_own(p, t, free);
+	*t = parse_is(p, TOK_LBRACE) ? parse_transform_block(p) : transform_ident(p);
+	parse_release(p, slot);
+	return t;
+}
+
+/* ---- primitives ---- */
+
+/* What a primitive statement said before its modifiers, kept so the
+ * primitive can be built again when `open` or `sturm` follows. */
+struct shape_args {
+	enum kw kw;
+	vec3 v[6];
+	double f[4];
+	double coef[120];
+	int order;
+	bool open, sturm;
+};
+
+/* The comma between arguments: optional, as in POV-Ray
+ * (`sphere { <0,0,0> 1 }` is a sphere). */
+static void opt_comma(struct parser *p)
+{
+	parse_accept(p, TOK_COMMA);
+}
+
+static int poly_coef_count(int order)
+{
+	return (order + 1) * (order + 2) * (order + 3) / 6;
+}
+
+/* Build the primitive a holds. */
+static struct object *build_shape(const struct shape_args *a, struct srcpos at)
+{
+	switch (a->kw) {
+	case KW_SPHERE: return sphere_new(a->v[0], a->f[0], at);
+	case KW_PLANE: return plane_new(a->v[0], a->f[0], at);
+	case KW_BOX: return box_new(a->v[0], a->v[1], at);
+	case KW_CYLINDER: return cylinder_new(a->v[0], a->v[1], a->f[0], a->open, at);
+	case KW_CONE: return cone_new(a->v[0], a->f[0], a->v[1], a->f[1], a->open, at);
+	case KW_DISC: return disc_new(a->v[0], a->v[1], a->f[0], a->f[1], at);
+	case KW_TORUS: return torus_new(a->f[0], a->f[1], a->sturm, at);
+	case KW_TRIANGLE: return triangle_new(a->v[0], a->v[1], a->v[2], at);
+	case KW_SMOOTH_TRIANGLE:
+		return smooth_triangle_new(a->v[0], a->v[1], a->v[2], a->v[3], a->v[4], a->v[5], at);
+	case KW_QUADRIC: return quadric_new(a->v[0], a->v[1], a->v[2], a->f[0], at);
+	case KW_CUBIC:
+	case KW_QUARTIC:
+	case KW_POLY: return poly_new(a->order, a->coef, a->sturm, at);
+	case KW_SUPERELLIPSOID: return superellipsoid_new(a->f[0], a->f[1], at);
+	default: return NULL;
+	}
+}
+
+/* A vector that must not be zero (a direction or normal). */
+static vec3 nonzero_vector(struct parser *p, const char *what)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	vec3 v = parse_vector(p);
+	if (v.x == 0 && v.y == 0 && v.z == 0)
+		parse_error_at(p, at, "%s cannot be the zero vector", what);
+	return v;
+}
+
+/* The polynomial's coefficients: '<' exactly n floats '>'. */
+static void poly_coefs(struct parser *p, struct shape_args *a, const char *name)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	int n = poly_coef_count(a->order);
+	int got = parse_number_list(p, a->coef, n);
+	if (got != n)
+		parse_error_at(p, at, "%s of order %d needs %d coefficients, found %d", name, a->order, n, got);
+}
+
+/* The primitive's own arguments, after its '{'. */
+static void parse_shape_args(struct parser *p, struct shape_args *a)
+{
+	switch (a->kw) {
+	case KW_SPHERE: /* sphere '{' VECTOR ',' FLOAT */
+		a->v[0] = parse_vector(p);
+		opt_comma(p);
+		a->f[0] = parse_float(p);
+		break;
+	case KW_PLANE: /* plane '{' VECTOR ',' FLOAT */
+		a->v[0] = nonzero_vector(p, "a plane's normal");
+		opt_comma(p);
+		a->f[0] = parse_float(p);
+		break;
+	case KW_BOX: /* box '{' VECTOR ',' VECTOR */
+		a->v[0] = parse_vector(p);
+		opt_comma(p);
+		a->v[1] = parse_vector(p);
+		break;
+	case KW_CYLINDER: { /* cylinder '{' VECTOR ',' VECTOR ',' FLOAT */
+		a->v[0] = parse_vector(p);
+		opt_comma(p);
+		struct srcpos cat = parse_peek(p)->pos;
+		a->v[1] = parse_vector(p);
+		if (v3_len(v3_sub(a->v[1], a->v[0])) == 0)
+			parse_error_at(p, cat, "a cylinder's cap is at its base (a degenerate cylinder)");
+		opt_comma(p);
+		a->f[0] = parse_float(p);
+		break;
+	}
+	case KW_CONE: { /* cone '{' VECTOR ',' FLOAT ',' VECTOR ',' FLOAT */
+		a->v[0] = parse_vector(p);
+		opt_comma(p);
+		a->f[0] = parse_float(p);
+		opt_comma(p);
+		struct srcpos cat = parse_peek(p)->pos;
+		a->v[1] = parse_vector(p);
+		if (v3_len(v3_sub(a->v[1], a->v[0])) == 0)
+			parse_error_at(p, cat, "a cone's cap is at its base (a degenerate cone)");
+		opt_comma(p);
+		a->f[1] = parse_float(p);
+		break;
+	}
+	case KW_DISC: /* disc '{' VECTOR ',' VECTOR ',' FLOAT [',' FLOAT] */
+		a->v[0] = parse_vector(p);
+		opt_comma(p);
+		a->v[1] = nonzero_vector(p, "a disc's normal");
+		opt_comma(p);
+		a->f[0] = parse_float(p);
+		a->f[1] = 0;
+		if (parse_accept(p, TOK_COMMA))
+			a->f[1] = parse_float(p);
+		break;
+	case KW_TORUS: /* torus '{' FLOAT ',' FLOAT */
+		a->f[0] = parse_float(p);
+		opt_comma(p);
+		a->f[1] = parse_float(p);
+		break;
+	case KW_TRIANGLE: /* triangle '{' VECTOR ',' VECTOR ',' VECTOR */
+		for (int i = 0; i < 3; i++) {
+			if (i)
+				opt_comma(p);
+			a->v[i] = parse_vector(p);
+		}
+		break;
+	case KW_SMOOTH_TRIANGLE: /* smooth_triangle '{' 6 VECTORs, comma-separated */
+		for (int i = 0; i < 6; i++) {
+			if (i)
+				opt_comma(p);
+			a->v[i] = parse_vector(p);
+		}
+		break;
+	case KW_QUADRIC: /* quadric '{' VECTOR ',' VECTOR ',' VECTOR ',' FLOAT */
+		for (int i = 0; i < 3; i++) {
+			a->v[i] = parse_vector(p);
+			opt_comma(p);
+		}
+		a->f[0] = parse_float(p);
+		break;
+	case KW_CUBIC: /* cubic '{' < 20 floats > */
+		a->order = 3;
+		poly_coefs(p, a, "a cubic");
+		break;
+	case KW_QUARTIC: /* quartic '{' < 35 floats > */
+		a->order = 4;
+		poly_coefs(p, a, "a quartic");
+		break;
+	case KW_POLY: { /* poly '{' INT ',' < floats > */
+		struct srcpos at = parse_peek(p)->pos;
+		double o = parse_float(p);
+		if (o != (int)o || o < POLY_MIN_ORDER || o > POLY_MAX_ORDER)
+			parse_error_at(p, at, "a poly's order must be a whole number from %d to %d, found %g",
+			               POLY_MIN_ORDER, POLY_MAX_ORDER, o);
+		a->order = (int)o;
+		opt_comma(p);
+		poly_coefs(p, a, "a poly");
+		break;
+	}
+	case KW_SUPERELLIPSOID: { /* superellipsoid '{' VECTOR (e, n) */
+		struct srcpos at = parse_peek(p)->pos;
+		struct value v = parse_expression(p);
+		if (v.kind != VAL_VECTOR || v.n < 2)
+			parse_error_at(p, at, "a superellipsoid needs a 2-component vector <e, n>");
+		a->f[0] = v.v[0];
+		a->f[1] = v.v[1];
+		if (a->f[0] <= 0 || a->f[1] <= 0)
+			parse_error_at(p, at, "a superellipsoid's exponents must be greater than 0");
+		break;
+	}
+	default:
+		break;
+	}
+}
+
+/* ---- meshes ---- */
+
+/* Mesh lists are indexed in 32 bits. */
+#define MESH_MAX_ITEMS 0x7fffffffu
+
+/* count := FLOAT, a non-negative whole number, before a mesh2 list. */
+static size_t list_count(struct parser *p, const char *what)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	double n = parse_float(p);
+	if (n < 0 || n != floor(n) || n > MESH_MAX_ITEMS)
+		parse_error_at(p, at, "the number of %s must be a whole number from 0 to %u, found %g", what,
+		               MESH_MAX_ITEMS, n);
+	return (size_t)n;
+}
+
+/* An index into a list of n entries. */
+static uint32_t list_index(struct parser *p, double v, size_t n, const char *what, struct srcpos at)
+{
+	if (v < 0 || v != floor(v) || v >= (double)n)
+		parse_error_at(p, at, "%s index %g is out of range (the list has %zu)", what, v, n);
+	return (uint32_t)v;
+}
+
+static void free_mesh_builder_cb(void *b) { mesh_builder_free(b); }
+
+/* A texture for a mesh: texture '{' ... '}', added to the builder's list. */
+static uint32_t mesh_texture(struct parser *p, struct mesh_builder *mb)
+{
+	struct texture **holder = calloc(1, sizeof *holder);
+	if (!holder) abort();
+	int slot = parse_own(p, holder, parse_free_texture_holder);
+	parse_texture(p, holder);
+	uint32_t i = mesh_add_texture(mb, *holder);
+	parse_release(p, slot);
+	parse_free_texture_holder(holder);
+	return i;
+}
+
+/* A uv vector: a 2-component vector (a float is promoted). */
+static void uv_value(struct parser *p, double uv[2])
+{
+	struct srcpos at = parse_peek(p)->pos;
+	struct value v = parse_expression(p);
+	if (v.kind != VAL_VECTOR && v.kind != VAL_FLOAT)
+		parse_error_at(p, at, "expected a 2-component uv vector, found a %s", val_kind_name(v.kind));
+	uv[0] = v.v[0];
+	uv[1] = v.kind == VAL_FLOAT ? v.v[0] : v.v[1];
+}
+
+/* mesh_item := (triangle | smooth_triangle) '{' vectors
+ *              [uv_vectors UV UV UV] [texture '{' ... '}'] '}'
+ *            | inside_vector VECTOR | hierarchy [BOOL] */
+static bool parse_mesh_item(struct parser *p, struct mesh_builder *mb)
+{
+	if (parse_is_kw(p, KW_TRIANGLE) || parse_is_kw(p, KW_SMOOTH_TRIANGLE)) {
+		bool smooth = parse_is_kw(p, KW_SMOOTH_TRIANGLE);
+		parse_advance(p);
+		parse_expect(p, TOK_LBRACE);
+		uint32_t v[3], n[3], uv[3], tex[3] = {0, 0, 0};
+		for (int i = 0; i < 3; i++) {
+			if (i)
+				opt_comma(p);
+			v[i] = mesh_add_vertex(mb, parse_vector(p));
+			if (smooth) {
+				opt_comma(p);
+				n[i] = mesh_add_normal(mb, parse_vector(p));
+			}
+		}
+		bool has_uv = false;
+		int ntex = 0;
+		for (;;) {
+			if (parse_accept_kw(p, KW_UV_VECTORS)) {
+				for (int i = 0; i < 3; i++) {
+					double c[2];
+					if (i)
+						opt_comma(p);
+					uv_value(p, c);
+					uv[i] = mesh_add_uv(mb, c[0], c[1]);
+				}
+				has_uv = true;
+			} else if (parse_is_kw(p, KW_TEXTURE)) {
+				tex[0] = mesh_texture(p, mb);
+				ntex = 1;
+			} else {
+				break;
+			}
+		}
+		parse_expect(p, TOK_RBRACE);
+		mesh_add_face(mb, v, ntex, tex);
+		uint32_t f = mesh_face_count(mb) - 1;
+		if (smooth)
+			mesh_set_face_normals(mb, f, n);
+		if (has_uv)
+			mesh_set_face_uvs(mb, f, uv);
+		return true;
+	}
+	if (parse_accept_kw(p, KW_INSIDE_VECTOR)) {
+		mesh_set_inside_vector(mb, parse_vector(p));
+		return true;
+	}
+	if (parse_accept_kw(p, KW_HIERARCHY)) {
+		/* lucent always builds the mesh's hierarchy; the switch is read
+		 * for compatibility. */
+		if (parse_starts_expression(p))
+			(void)parse_float(p);
+		return true;
+	}
+	return false;
+}
+
+/* The lists of mesh2, in the order POV-Ray requires them. */
+enum mesh2_list { M2_VERTICES, M2_NORMALS, M2_UVS, M2_TEXTURES, M2_FACES, M2_NORMAL_INDICES, M2_UV_INDICES };
+static const char *const m2_names[] = {"vertex_vectors", "normal_vectors", "uv_vectors", "texture_list",
+                                       "face_indices", "normal_indices", "uv_indices"};
+static const char *const m2_items[] = {"vertices", "normals", "uv vectors", "textures",
+                                       "faces", "normal indices", "uv indices"};
+
+/* The face in progress while face_indices is read: its texture indices
+ * follow its vector. */
+struct pending_face {
+	bool set;
+	uint32_t v[3], tex[3];
+	int ntex;
+	struct srcpos at;
+};
+
+static void flush_face(struct parser *p, struct mesh_builder *mb, struct pending_face *f)
+{
+	if (!f->set)
+		return;
+	if (f->ntex == 2)
+		parse_error_at(p, f->at, "a face has 1 or 3 texture indices, not 2");
+	mesh_add_face(mb, f->v, f->ntex, f->tex);
+	f->set = false;
+}
+
+/* list '{' count [','] item { [','] item } '}', as POV-Ray reads mesh2's
+ * lists (commas optional). face_indices items are <a,b,c> followed by 0, 1
+ * or 3 texture indices when a texture_list was given. */
+static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mesh2_list which)
+{
+	parse_expect(p, TOK_LBRACE);
+	struct srcpos at = parse_peek(p)->pos;
+	size_t n = list_count(p, m2_items[which]);
+	size_t nfaces = mesh_face_count(mb);
+	/* The first n faces get normals or uv vectors; the rest stay flat. */
+	if ((which == M2_NORMAL_INDICES || which == M2_UV_INDICES) && n > nfaces)
+		parse_error_at(p, at, "%s has %zu entries but there are only %zu faces", m2_names[which], n, nfaces);
+	struct pending_face face = {0};
+	size_t i = 0;
+	for (;;) {
+		opt_comma(p);
+		if (parse_is(p, TOK_RBRACE))
+			break;
+		struct srcpos vat = parse_peek(p)->pos;
+		if (which == M2_TEXTURES) {
+			if (!parse_is_kw(p, KW_TEXTURE))
+				parse_expected(p, "a texture or '}'");
+			if (i == n)
+				parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
+			mesh_texture(p, mb);
+			i++;
+			continue;
+		}
+		if (which == M2_UVS) {
+			double uv[2];
+			if (i == n)
+				parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
+			uv_value(p, uv);
+			mesh_add_uv(mb, uv[0], uv[1]);
+			i++;
+			continue;
+		}
+		struct value v = parse_expression(p);
+		if (which == M2_FACES && v.kind == VAL_FLOAT && face.set) {
+			size_t nt = mesh_texture_count(mb);
+			if (nt == 0)
+				parse_error_at(p, vat, "a face's texture index needs a texture_list before face_indices");
+			if (face.ntex == 3)
+				parse_error_at(p, vat, "a face has at most 3 texture indices");
+			face.tex[face.ntex++] = list_index(p, v.v[0], nt, "texture", vat);
+			continue;
+		}
+		if (v.kind != VAL_VECTOR || v.n < 3)
+			parse_error_at(p, vat, "expected a 3-component vector in %s, found a %s", m2_names[which],
+			               val_kind_name(v.kind));
+		if (i == n)
+			parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
+		vec3 x = v3(v.v[0], v.v[1], v.v[2]);
+		uint32_t idx[3];
+		size_t lim = which == M2_FACES ? mesh_vertex_count(mb)
+		             : which == M2_NORMAL_INDICES ? mesh_normal_count(mb) : mesh_uv_count(mb);
+		const char *name = which == M2_FACES ? "vertex" : which == M2_NORMAL_INDICES ? "normal" : "uv";
+		if (which >= M2_FACES)
+			for (int k = 0; k < 3; k++)
+				idx[k] = list_index(p, v.v[k], lim, name, vat);
+		switch (which) {
+		case M2_VERTICES: mesh_add_vertex(mb, x); break;
+		case M2_NORMALS: mesh_add_normal(mb, x); break;
+		case M2_FACES:
+			flush_face(p, mb, &face);
+			memcpy(face.v, idx, sizeof idx);
+			face.ntex = 0;
+			face.at = vat;
+			face.set = true;
+			break;
+		case M2_NORMAL_INDICES: mesh_set_face_normals(mb, (uint32_t)i, idx); break;
+		case M2_UV_INDICES: mesh_set_face_uvs(mb, (uint32_t)i, idx); break;
+		default: break;
+		}
+		i++;
+	}
+	flush_face(p, mb, &face);
+	if (i < n)
+		parse_error_at(p, at, "%s says %zu %s but has only %zu", m2_names[which], n, m2_items[which], i);
+	parse_advance(p);
+}
+
+/* mesh2_item := vertex_vectors | normal_vectors | uv_vectors | texture_list
+ *             | face_indices | normal_indices | uv_indices
+ *             | inside_vector VECTOR
+ * The lists must come in this order, each at most once. */
+static bool parse_mesh2_item(struct parser *p, struct mesh_builder *mb, int *last)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	static const enum kw kws[] = {KW_VERTEX_VECTORS, KW_NORMAL_VECTORS, KW_UV_VECTORS, KW_TEXTURE_LIST,
+	                              KW_FACE_INDICES, KW_NORMAL_INDICES, KW_UV_INDICES};
+	if (t->kw == KW_INSIDE_VECTOR) {
+		parse_advance(p);
+		mesh_set_inside_vector(mb, parse_vector(p));
+		return true;
+	}
+	for (int i = 0; i < 7; i++) {
+		if (t->kw != kws[i])
+			continue;
+		if (i <= *last)
+			parse_error(p, "%s must come before %s in mesh2", m2_names[i], m2_names[*last]);
+		if (i == M2_FACES && mesh_vertex_count(mb) == 0)
+			parse_error(p, "face_indices needs vertex_vectors before it");
+		*last = i;
+		parse_advance(p);
+		parse_mesh2_list(p, mb, (enum mesh2_list)i);
+		return true;
+	}
+	return false;
+}
+
+/* ---- objects ---- */
+
+bool parse_is_object_start(enum kw k)
+{
+	switch (k) {
+	case KW_SPHERE: case KW_PLANE: case KW_BOX: case KW_CYLINDER: case KW_CONE: case KW_DISC:
+	case KW_TORUS: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE: case KW_QUADRIC: case KW_CUBIC:
+	case KW_QUARTIC: case KW_POLY: case KW_SUPERELLIPSOID: case KW_MESH: case KW_MESH2:
+	case KW_UNION: case KW_INTERSECTION: case KW_DIFFERENCE: case KW_MERGE: case KW_OBJECT:
+		return true;
+	default:
+		return false;
+	}
+}
+
+static struct object *parse_object_in(struct parser *p, bool child);
+
+/* clipped_by/bounded_by '{' object { object } '}' | '{' bounded_by/clipped_by '}'
+ * Returns the object (an intersection when several), or NULL for the
+ * other-modifier form, which *same records. */
+static struct object *parse_limit(struct parser *p, enum kw other, bool *same)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	if (parse_accept_kw(p, other)) {
+		parse_expect(p, TOK_RBRACE);
+		*same = true;
+		return NULL;
+	}
+	struct object *lim = NULL, *group = NULL;
+	int slot = -1;
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD || !parse_is_object_start((enum kw)t->kw))
+			parse_expected(p, "an object or '}'");
+		struct object *o = parse_object_in(p, true);
+		if (!lim) {
+			lim = o;
+			slot = parse_own(p, lim, free_object_cb);
+		} else {
+			if (!group) {
+				group = csg_new(CSG_INTERSECTION, at);
+				csg_add(group, lim);
+				lim = group;
+				p->owned[slot].ptr = group;
+			}
+			csg_add(group, o);
+		}
+	}
+	if (!lim)
+		parse_error_at(p, at, "expected an object in %s", other == KW_BOUNDED_BY ? "clipped_by" : "bounded_by");
+	parse_release(p, slot);
+	*same = false;
+	return lim;
+}
+
+/* What an object statement has read, for the modifiers that need more than
+ * the object itself. */
+struct obj_state {
+	struct object *o;
+	int slot;                 /* its ownership slot */
+	struct shape_args *args;  /* a primitive's arguments, or NULL */
+	struct mesh_builder *mb;  /* mesh or mesh2 being read, or NULL */
+	bool clip_is_bound, bound_is_clip;
+	unsigned flags;           /* flags given to a CSG, for its children */
+};
+
+/* Replace s->o by a primitive rebuilt from s->args (after `open` or
+ * `sturm`), moving what the modifiers gave it. */
+static void rebuild(struct parser *p, struct obj_state *s)
+{
+	struct object *old = s->o, *n = build_shape(s->args, old->pos);
+	n->xf = old->xf;
+	n->has_xf = old->has_xf;
+	n->tex = old->tex;
+	n->flags = old->flags;
+	n->clip = old->clip;
+	n->bound = old->bound;
+	old->tex = NULL;
+	old->clip = old->bound = NULL;
+	object_free(old);
+	s->o = n;
+	p->owned[s->slot].ptr = n;
+}
+
+/* object_modifier := texture | pigment | finish | transform_item
+ *   | no_shadow | no_image | no_reflection | hollow [BOOL]
+ *   | double_illuminate | inverse | clipped_by | bounded_by
+ *   | open | sturm | split_union BOOL */
+static bool parse_object_modifier(struct parser *p, struct obj_state *s)
+{
+	struct object *o = s->o;
+	struct xform t;
+	if (parse_transform_item(p, &t)) {
+		object_transform(o, &t);
+		return true;
+	}
+	const struct token *tk = parse_peek(p);
+	if (tk->kind != TOK_KEYWORD)
+		return false;
+	struct srcpos at = tk->pos;
+	switch (tk->kw) {
+	case KW_TEXTURE: parse_texture(p, &o->tex); return true;
+	case KW_PIGMENT: parse_pigment(p, &parse_private_texture(p, &o->tex)->pigment); return true;
+	case KW_FINISH: parse_finish(p, &parse_private_texture(p, &o->tex)->finish); return true;
+	case KW_NO_SHADOW: parse_advance(p); s->flags |= OBJ_NO_SHADOW; return true;
+	case KW_NO_IMAGE: parse_advance(p); s->flags |= OBJ_NO_IMAGE; return true;
+	case KW_NO_REFLECTION: parse_advance(p); s->flags |= OBJ_NO_REFLECTION; return true;
+	case KW_DOUBLE_ILLUMINATE: parse_advance(p); s->flags |= OBJ_DOUBLE_ILLUMINATE; return true;
+	case KW_INVERSE: parse_advance(p); o->flags ^= OBJ_INVERSE; return true;
+	case KW_HOLLOW:
+		parse_advance(p);
+		s->flags |= OBJ_HOLLOW;
+		if (parse_starts_expression(p) && parse_float(p) == 0)
+			s->flags &= ~(unsigned)OBJ_HOLLOW;
+		return true;
+	case KW_CLIPPED_BY: {
+		bool same;
+		struct object *c = parse_limit(p, KW_BOUNDED_BY, &same);
+		if (same) {
+			s->clip_is_bound = true;
+		} else {
+			if (o->clip && o->clip != o->bound)
+				object_free(o->clip);
+			o->clip = c;
+			s->clip_is_bound = false;
+		}
+		return true;
+	}
+	case KW_BOUNDED_BY: {
+		bool same;
+		struct object *b = parse_limit(p, KW_CLIPPED_BY, &same);
+		if (same) {
+			s->bound_is_clip = true;
+		} else {
+			if (o->bound && o->bound != o->clip)
+				object_free(o->bound);
+			o->bound = b;
+			s->bound_is_clip = false;
+		}
+		return true;
+	}
+	case KW_OPEN:
+	case KW_STURM: {
+		bool is_open = tk->kw == KW_OPEN;
+		enum kw k = s->args ? s->args->kw : KW_OBJECT;
+		bool fits = is_open ? (k == KW_CYLINDER || k == KW_CONE)
+		                    : (k == KW_TORUS || k == KW_CUBIC || k == KW_QUARTIC || k == KW_POLY);
+		if (!fits)
+			parse_error_at(p, at, "'%s' applies to %s only", is_open ? "open" : "sturm",
+			               is_open ? "cylinder and cone" : "torus, cubic, quartic and poly");
+		parse_advance(p);
+		bool on = true;
+		if (parse_starts_expression(p))
+			on = parse_float(p) != 0;
+		if (is_open)
+			s->args->open = on;
+		else
+			s->args->sturm = on;
+		rebuild(p, s);
+		return true;
+	}
+	case KW_SPLIT_UNION: {
+		enum csg_kind kind;
+		if (!csg_kind_of(o, &kind) || kind != CSG_UNION)
+			parse_error_at(p, at, "'split_union' applies to union only");
+		parse_advance(p);
+		csg_set_split(o, parse_float(p) != 0);
+		return true;
+	}
+	default:
+		return false;
+	}
+}
+
+/* object := primitive '{' args { object_modifier } '}'
+ *         | csg '{' { object | object_modifier } '}'
+ *         | mesh '{' { mesh_item | object_modifier } '}'
+ *         | mesh2 '{' { mesh2_item | object_modifier } '}'
+ *         | object '{' (IDENT | object) { object_modifier } '}'
+ * `child`: inside a CSG or a clip, where the default texture is not
+ * applied (the parent's texture comes first). The caller owns the result. */
+static struct object *parse_object_in(struct parser *p, bool child)
+{
+	const struct token *t = parse_peek(p);
+	enum kw k = (enum kw)t->kw;
+	struct srcpos at = t->pos;
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	struct obj_state s = {0};
+	struct shape_args args;
+	int mslot = -1;
+	switch (k) {
+	case KW_OBJECT: {
+		const struct token *n = parse_peek(p);
+		if (n->kind == TOK_KEYWORD && parse_is_object_start((enum kw)n->kw)) {
+			s.o = parse_object_in(p, true);
+			break;
+		}
+		const struct value *v = parse_ident_value(p);
+		if (!v)
+			parse_expected(p, "an object identifier or an object");
+		if (v->kind != VAL_OBJECT)
+			parse_wrong_kind(p, v, "an object");
+		s.o = object_copy(v->obj);
+		s.o->pos = at;
+		parse_advance(p);
+		break;
+	}
+	case KW_UNION: s.o = csg_new(CSG_UNION, at); break;
+	case KW_MERGE: s.o = csg_new(CSG_MERGE, at); break;
+	case KW_INTERSECTION: s.o = csg_new(CSG_INTERSECTION, at); break;
+	case KW_DIFFERENCE: s.o = csg_new(CSG_DIFFERENCE, at); break;
+	case KW_MESH:
+	case KW_MESH2:
+		s.mb = mesh_builder_new(k == KW_MESH ? MESH_KIND_MESH : MESH_KIND_MESH2);
+		mslot = parse_own(p, s.mb, free_mesh_builder_cb);
+		break;
+	default:
+		memset(&args, 0, sizeof args);
+		args.kw = k;
+		parse_shape_args(p, &args);
+		s.args = &args;
+		s.o = build_shape(&args, at);
+		break;
+	}
+	bool is_csg = k == KW_UNION || k == KW_MERGE || k == KW_INTERSECTION || k == KW_DIFFERENCE;
+	if (s.mb) {
+		/* Mesh items come first; the object exists once they are read. */
+		int last = -1;
+		if (k == KW_MESH)
+			while (parse_mesh_item(p, s.mb))
+				;
+		else
+			while (parse_mesh2_item(p, s.mb, &last))
+				;
+		if (k == KW_MESH2 && last < M2_FACES)
+			parse_error_at(p, at, "a mesh2 needs vertex_vectors and face_indices");
+		parse_release(p, mslot);
+		s.o = mesh_new(s.mb, at);
+		s.mb = NULL;
+	}
+	s.slot = parse_own(p, s.o, free_object_cb);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *tk = parse_peek(p);
+		if (is_csg && tk->kind == TOK_KEYWORD && parse_is_object_start((enum kw)tk->kw)) {
+			csg_add(s.o, parse_object_in(p, true));
+			continue;
+		}
+		if (!parse_object_modifier(p, &s)) {
+			if (is_csg)
+				parse_expected(p, "an object, an object modifier or '}'");
+			parse_expected(p, "an object modifier or '}'");
+		}
+	}
+	struct object *o = s.o;
+	if (s.clip_is_bound && s.bound_is_clip)
+		parse_error_at(p, at, "clipped_by { bounded_by } and bounded_by { clipped_by } name each other");
+	if (s.clip_is_bound) {
+		if (!o->bound)
+			parse_error_at(p, at, "clipped_by { bounded_by } needs a bounded_by object");
+		o->clip = o->bound;
+	}
+	if (s.bound_is_clip) {
+		if (!o->clip)
+			parse_error_at(p, at, "bounded_by { clipped_by } needs a clipped_by object");
+		o->bound = o->clip;
+	}
+	if (s.flags)
+		object_set_flags(o, s.flags);
+	/* A CSG's texture goes to the children that have none. */
+	if (is_csg && o->tex)
+		object_fill_texture(o, o->tex);
+	if (!child && p->default_tex)
+		object_fill_texture(o, p->default_tex);
+	parse_release(p, s.slot);
+	return o;
+}
+
+struct object *parse_object(struct parser *p, bool scene_level)
+{
+	return parse_object_in(p, !scene_level);
+}

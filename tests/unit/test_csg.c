@@ -1,0 +1,249 @@
+/* test_csg.c: unit tests for CSG (src/geom/csg.h) and the modifiers every
+ * object has (clipped_by, bounded_by, inverse, transforms of a CSG). The
+ * children are spheres, boxes and planes, whose answers are analytic; a
+ * CSG after prepare (its own BVH) must agree exactly with the same CSG
+ * before it (children scanned one by one). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include "geom/csg.h"
+#include "geom/shapes.h"
+#include "math/hash.h"
+#include "scene/object.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "testutil.h"
+
+static const struct srcpos nopos = {0, 0, 0};
+
+/* Every crossing of o along org + t dir for t > 0, by repeated closest
+ * hits; returns how many (at most max). */
+static int crossings(const struct object *o, vec3 org, vec3 dir, double *t, int max)
+{
+	struct ray r = {org, dir};
+	int n = 0;
+	double tmin = 0;
+	struct hit h;
+	while (n < max && object_intersect(o, &r, tmin, INFINITY, &h)) {
+		t[n++] = h.t;
+		tmin = h.t;
+	}
+	return n;
+}
+
+static struct object *two_spheres(enum csg_kind k)
+{
+	/* Unit spheres at x = -0.5 and x = 0.5: they overlap on [-0.5, 0.5]. */
+	struct object *c = csg_new(k, nopos);
+	csg_add(c, sphere_new(v3(-0.5, 0, 0), 1, nopos));
+	csg_add(c, sphere_new(v3(0.5, 0, 0), 1, nopos));
+	return c;
+}
+
+static void test_union(void **state)
+{
+	(void)state;
+	struct object *c = two_spheres(CSG_UNION);
+	double t[8];
+	/* Along x from -5: every surface of both spheres, inner ones too. */
+	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 8), 4);
+	assert_near(t[0], 3.5, 1e-12);
+	assert_near(t[1], 4.5, 1e-12);
+	assert_near(t[2], 5.5, 1e-12);
+	assert_near(t[3], 6.5, 1e-12);
+	assert_true(object_inside(c, v3(-1.2, 0, 0)));
+	assert_true(object_inside(c, v3(1.2, 0, 0)));
+	assert_false(object_inside(c, v3(0, 1.2, 0)));
+	struct aabb b = object_world_bounds(c);
+	assert_vec_near(b.lo, -1.5, -1, -1, 0);
+	assert_vec_near(b.hi, 1.5, 1, 1, 0);
+	object_free(c);
+}
+
+static void test_merge(void **state)
+{
+	(void)state;
+	struct object *c = two_spheres(CSG_MERGE);
+	double t[8];
+	/* Only the outer surfaces remain. */
+	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 8), 2);
+	assert_near(t[0], 3.5, 1e-12);
+	assert_near(t[1], 6.5, 1e-12);
+	/* The hit names the leaf sphere it found. */
+	struct ray r = {v3(5, 0, 0), v3(-1, 0, 0)};
+	struct hit h;
+	assert_true(object_intersect(c, &r, 0, INFINITY, &h));
+	struct object **kids;
+	assert_int_equal(c->ops->children(c, &kids), 2);
+	assert_ptr_equal(h.obj, kids[1]);
+	object_free(c);
+}
+
+static void test_intersection(void **state)
+{
+	(void)state;
+	struct object *c = two_spheres(CSG_INTERSECTION);
+	double t[8];
+	/* The lens between x = -0.5 and x = 0.5. */
+	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 8), 2);
+	assert_near(t[0], 4.5, 1e-12);
+	assert_near(t[1], 5.5, 1e-12);
+	assert_true(object_inside(c, v3(0, 0, 0)));
+	assert_false(object_inside(c, v3(-1, 0, 0)));
+	/* A ray through one sphere only misses. */
+	assert_int_equal(crossings(c, v3(-1.2, -5, 0), v3(0, 1, 0), t, 8), 0);
+	struct aabb b = object_world_bounds(c);
+	assert_vec_near(b.lo, -0.5, -1, -1, 0);
+	assert_vec_near(b.hi, 0.5, 1, 1, 0);
+	object_free(c);
+}
+
+static void test_difference(void **state)
+{
+	(void)state;
+	/* A box with a spherical bite out of its +x face. */
+	struct object *c = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(c, box_new(v3(-1, -1, -1), v3(1, 1, 1), nopos));
+	csg_add(c, sphere_new(v3(1, 0, 0), 0.5, nopos));
+	double t[8];
+	/* Along x through the bite: box face at -1, then the sphere's surface
+	 * at x = 0.5 (seen from inside the box). */
+	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 8), 2);
+	assert_near(t[0], 4, 1e-12);
+	assert_near(t[1], 5.5, 1e-12);
+	/* Beside the bite the +x face is there. */
+	assert_int_equal(crossings(c, v3(-5, 0.9, 0), v3(1, 0, 0), t, 8), 2);
+	assert_near(t[1], 6, 1e-12);
+	assert_false(object_inside(c, v3(0.9, 0, 0)));
+	assert_true(object_inside(c, v3(0.4, 0, 0)));
+	/* The normal on the bite's surface points out of the solid's
+	 * material, that is into the bite: object_normal gives the sphere's
+	 * outward normal, -x at x = 0.5. */
+	struct ray r = {v3(-5, 0, 0), v3(1, 0, 0)};
+	struct hit h;
+	assert_true(object_intersect(c, &r, 4.5, INFINITY, &h));
+	vec3 n = object_normal(h.obj, v3_madd(r.org, r.dir, h.t), &h);
+	assert_vec_near(n, -1, 0, 0, 1e-15);
+	object_free(c);
+}
+
+static void test_transform_and_copy(void **state)
+{
+	(void)state;
+	struct object *c = two_spheres(CSG_MERGE);
+	struct xform t = xform_translate(v3(0, 10, 0));
+	object_transform(c, &t);
+	struct object *d = object_copy(c);
+	struct xform s = xform_scale(v3(2, 2, 2));
+	object_transform(d, &s);
+	double tt[4];
+	/* c moved up by 10; d then scaled about the origin. */
+	assert_int_equal(crossings(c, v3(-5, 10, 0), v3(1, 0, 0), tt, 4), 2);
+	assert_near(tt[0], 3.5, 1e-12);
+	assert_int_equal(crossings(d, v3(-5, 20, 0), v3(1, 0, 0), tt, 4), 2);
+	assert_near(tt[0], 2, 1e-12);
+	assert_int_equal(crossings(c, v3(-5, 20, 0), v3(1, 0, 0), tt, 4), 0);
+	object_free(c);
+	object_free(d);
+}
+
+static void test_clip_and_bound(void **state)
+{
+	(void)state;
+	/* A sphere clipped by a box around its upper half: a cup seen from
+	 * below is open. */
+	struct object *s = sphere_new(v3(0, 0, 0), 1, nopos);
+	s->clip = box_new(v3(-2, 0, -2), v3(2, 2, 2), nopos);
+	double t[4];
+	assert_int_equal(crossings(s, v3(0, -5, 0), v3(0, 1, 0), t, 4), 1);
+	assert_near(t[0], 6, 1e-12);
+	assert_int_equal(crossings(s, v3(0.5, -5, 0), v3(0, 0, 1), t, 4), 0);
+	assert_false(object_inside(s, v3(0, -0.5, 0)));
+	assert_true(object_inside(s, v3(0, 0.5, 0)));
+	struct aabb b = object_world_bounds(s);
+	assert_vec_near(b.lo, -1, 0, -1, 0);
+	assert_vec_near(b.hi, 1, 1, 1, 0);
+	/* Transforms move the clip with the object. */
+	struct xform tr = xform_translate(v3(0, 0, 3));
+	object_transform(s, &tr);
+	assert_int_equal(crossings(s, v3(0, -5, 3), v3(0, 1, 0), t, 4), 1);
+	object_free(s);
+
+	/* bounded_by: rays that miss the bound skip the object. */
+	struct object *q = sphere_new(v3(0, 0, 0), 1, nopos);
+	q->bound = box_new(v3(-0.5, -0.5, -0.5), v3(0.5, 0.5, 0.5), nopos);
+	assert_int_equal(crossings(q, v3(0.8, 0, -5), v3(0, 0, 1), t, 4), 0);
+	assert_int_equal(crossings(q, v3(0, 0, -5), v3(0, 0, 1), t, 4), 2);
+	object_free(q);
+}
+
+static void test_inverse(void **state)
+{
+	(void)state;
+	/* Intersection with an inverse sphere is a difference. */
+	struct object *c = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(c, box_new(v3(-1, -1, -1), v3(1, 1, 1), nopos));
+	struct object *s = sphere_new(v3(1, 0, 0), 0.5, nopos);
+	s->flags |= OBJ_INVERSE;
+	csg_add(c, s);
+	double t[4];
+	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 4), 2);
+	assert_near(t[1], 5.5, 1e-12);
+	object_free(c);
+}
+
+/* A difference of a box and many small spheres: after object_prepare (a
+ * BVH over the subtracted children) every ray gives exactly the answer of
+ * the unprepared CSG. Likewise for merge and union. */
+static void test_prepared_matches_scan(void **state)
+{
+	(void)state;
+	enum csg_kind kinds[] = {CSG_DIFFERENCE, CSG_MERGE, CSG_UNION};
+	for (int k = 0; k < 3; k++) {
+		struct object *a = csg_new(kinds[k], nopos);
+		csg_add(a, box_new(v3(-2, -2, -2), v3(2, 2, 2), nopos));
+		for (uint32_t i = 0; i < 200; i++) {
+			vec3 c = v3(4 * hash_uniform(i, 0, k, 1) - 2, 4 * hash_uniform(i, 1, k, 1) - 2,
+			            4 * hash_uniform(i, 2, k, 1) - 2);
+			csg_add(a, sphere_new(c, 0.05 + 0.3 * hash_uniform(i, 3, k, 1), nopos));
+		}
+		csg_add(a, plane_new(v3(0, 1, 0), -1.5, nopos));
+		struct object *b = object_copy(a);
+		object_prepare(b);
+		for (uint32_t i = 0; i < 2000; i++) {
+			vec3 org = v3(10 * hash_uniform(i, 0, k, 2) - 5, 10 * hash_uniform(i, 1, k, 2) - 5, -8);
+			vec3 to = v3(4 * hash_uniform(i, 2, k, 2) - 2, 4 * hash_uniform(i, 3, k, 2) - 2,
+			             4 * hash_uniform(i, 4, k, 2) - 2);
+			struct ray r = {org, v3_sub(to, org)};
+			struct hit ha, hb;
+			bool fa = object_intersect(a, &r, 0, INFINITY, &ha);
+			bool fb = object_intersect(b, &r, 0, INFINITY, &hb);
+			assert_int_equal(fa, fb);
+			if (fa)
+				assert_near(ha.t, hb.t, 0);
+			assert_int_equal(object_inside(a, to), object_inside(b, to));
+		}
+		object_free(a);
+		object_free(b);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_union),
+		cmocka_unit_test(test_merge),
+		cmocka_unit_test(test_intersection),
+		cmocka_unit_test(test_difference),
+		cmocka_unit_test(test_transform_and_copy),
+		cmocka_unit_test(test_clip_and_bound),
+		cmocka_unit_test(test_inverse),
+		cmocka_unit_test(test_prepared_matches_scan),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
