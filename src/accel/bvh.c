@@ -32,13 +32,51 @@ static uint32_t new_node(struct bvh *b)
 	return (uint32_t)b->nnodes++;
 }
 
-/* Build the subtree over objs[first, first+n) into node `ni`. */
-static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
+/* What the build sorts: each object's bounds and centroid, kept together
+ * so that the passes over them read memory in order. */
+struct prim {
+	struct aabb box;
+	vec3 c;
+	uint32_t idx; /* into the caller's array */
+};
+
+static inline double dmin(double a, double b) { return a < b ? a : b; }
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
+static inline void grow(struct aabb *a, const struct aabb *b)
+{
+	a->lo.x = dmin(a->lo.x, b->lo.x);
+	a->lo.y = dmin(a->lo.y, b->lo.y);
+	a->lo.z = dmin(a->lo.z, b->lo.z);
+	a->hi.x = dmax(a->hi.x, b->hi.x);
+	a->hi.y = dmax(a->hi.y, b->hi.y);
+	a->hi.z = dmax(a->hi.z, b->hi.z);
+}
+
+static inline void grow_point(struct aabb *a, vec3 p)
+{
+	a->lo.x = dmin(a->lo.x, p.x);
+	a->lo.y = dmin(a->lo.y, p.y);
+	a->lo.z = dmin(a->lo.z, p.z);
+	a->hi.x = dmax(a->hi.x, p.x);
+	a->hi.y = dmax(a->hi.y, p.y);
+	a->hi.z = dmax(a->hi.z, p.z);
+}
+
+/* The bin of a centroid coordinate v in [lo, lo + ext] (scale = BINS/ext). */
+static inline int bin_of(double v, double lo, double scale)
+{
+	int k = (int)((v - lo) * scale);
+	return k >= BINS ? BINS - 1 : k < 0 ? 0 : k;
+}
+
+/* Build the subtree over pr[first, first+n) into node `ni`. */
+static void build(struct bvh *b, struct prim *pr, uint32_t ni, size_t first, size_t n, int depth)
 {
 	struct aabb box = aabb_empty(), cbox = aabb_empty();
 	for (size_t i = first; i < first + n; i++) {
-		box = aabb_union(box, b->objs[i]->bounds);
-		cbox = aabb_add_point(cbox, aabb_center(b->objs[i]->bounds));
+		grow(&box, &pr[i].box);
+		grow_point(&cbox, pr[i].c);
 	}
 	b->nodes[ni].box = box;
 	if (n <= LEAF_MAX || depth >= STACK_MAX - 2) {
@@ -53,22 +91,21 @@ static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
 		double lo = v3_get(cbox.lo, a), ext = v3_get(cbox.hi, a) - lo;
 		if (ext <= 0)
 			continue;
+		double scale = BINS / ext;
 		struct aabb bb[BINS];
 		size_t cnt[BINS] = {0};
 		for (int k = 0; k < BINS; k++) bb[k] = aabb_empty();
 		for (size_t i = first; i < first + n; i++) {
-			int k = (int)((v3_get(aabb_center(b->objs[i]->bounds), a) - lo) / ext * BINS);
-			if (k >= BINS) k = BINS - 1;
-			if (k < 0) k = 0;
+			int k = bin_of(v3_get(pr[i].c, a), lo, scale);
 			cnt[k]++;
-			bb[k] = aabb_union(bb[k], b->objs[i]->bounds);
+			grow(&bb[k], &pr[i].box);
 		}
 		double rarea[BINS];
 		size_t rcnt[BINS];
 		struct aabb acc = aabb_empty();
 		size_t c = 0;
 		for (int k = BINS - 1; k > 0; k--) {
-			acc = aabb_union(acc, bb[k]);
+			grow(&acc, &bb[k]);
 			c += cnt[k];
 			rarea[k] = aabb_area(acc);
 			rcnt[k] = c;
@@ -76,7 +113,7 @@ static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
 		acc = aabb_empty();
 		c = 0;
 		for (int k = 0; k < BINS - 1; k++) {
-			acc = aabb_union(acc, bb[k]);
+			grow(&acc, &bb[k]);
 			c += cnt[k];
 			if (c == 0 || rcnt[k + 1] == 0)
 				continue;
@@ -92,17 +129,15 @@ static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
 	if (best_axis < 0) {
 		mid = first + n / 2; /* all centroids coincide: split the list */
 	} else {
-		double lo = v3_get(cbox.lo, best_axis), ext = v3_get(cbox.hi, best_axis) - lo;
+		double lo = v3_get(cbox.lo, best_axis), scale = BINS / (v3_get(cbox.hi, best_axis) - lo);
 		size_t i = first, j = first + n;
 		while (i < j) {
-			int k = (int)((v3_get(aabb_center(b->objs[i]->bounds), best_axis) - lo) / ext * BINS);
-			if (k >= BINS) k = BINS - 1;
-			if (k < best_split) {
+			if (bin_of(v3_get(pr[i].c, best_axis), lo, scale) < best_split) {
 				i++;
 			} else {
-				const struct object *t = b->objs[i];
-				b->objs[i] = b->objs[--j];
-				b->objs[j] = t;
+				struct prim t = pr[i];
+				pr[i] = pr[--j];
+				pr[j] = t;
 			}
 		}
 		mid = i;
@@ -114,24 +149,35 @@ static void build(struct bvh *b, uint32_t ni, size_t first, size_t n, int depth)
 	b->nodes[ni].first = l;
 	b->nodes[ni].count = 0;
 	b->nodes[ni].axis = (uint32_t)(best_axis < 0 ? 0 : best_axis);
-	build(b, l, first, mid - first, depth + 1);
-	build(b, r, mid, first + n - mid, depth + 1);
+	build(b, pr, l, first, mid - first, depth + 1);
+	build(b, pr, r, mid, first + n - mid, depth + 1);
 }
 
 struct bvh *bvh_build(struct object *const *objs, size_t n)
 {
 	struct bvh *b = calloc(1, sizeof *b);
-	if (!b) abort();
+	struct prim *pr = malloc((n ? n : 1) * sizeof *pr);
+	if (!b || !pr) abort();
 	b->nobjs = n;
 	b->objs = malloc((n ? n : 1) * sizeof *b->objs);
 	if (!b->objs) abort();
-	for (size_t i = 0; i < n; i++)
-		b->objs[i] = objs[i];
+	/* A binary tree with leaves of at least one object has < 2n nodes. */
+	b->cap = 2 * n + 1;
+	b->nodes = malloc(b->cap * sizeof *b->nodes);
+	if (!b->nodes) abort();
+	for (size_t i = 0; i < n; i++) {
+		pr[i].box = objs[i]->bounds;
+		pr[i].c = aabb_center(objs[i]->bounds);
+		pr[i].idx = (uint32_t)i;
+	}
 	uint32_t root = new_node(b);
 	if (n > 0)
-		build(b, root, 0, n, 0);
+		build(b, pr, root, 0, n, 0);
 	else
 		b->nodes[root].box = aabb_empty();
+	for (size_t i = 0; i < n; i++)
+		b->objs[i] = objs[pr[i].idx];
+	free(pr);
 	return b;
 }
 

@@ -20,6 +20,9 @@ struct lexer {
 	size_t ntoks, cap;
 	char *sbuf;        /* scratch for string literals */
 	size_t scap;
+	bool in_list;      /* inside the braces of a mesh2 list (see numlist) */
+	void **blocks;     /* numlists made so far */
+	size_t nblocks, bcap;
 };
 
 static struct srcpos here(const struct lexer *lx, size_t at)
@@ -91,43 +94,262 @@ static bool skip_space(struct lexer *lx)
 	return true;
 }
 
-static bool lex_number(struct lexer *lx)
+/* The value of the number text s[0..len): exactly strtod's result. Plain
+ * decimals of up to 15 significant digits and 22 decimals take a fast
+ * path: the digits form an integer below 2^53 and 10^k is exact, so one
+ * correctly rounded division gives the correctly rounded value. */
+static double number_value(const char *s, size_t len)
 {
-	size_t start = lx->i;
-	const char *s = lx->s;
-	while (lx->i < lx->n && isdigit((unsigned char)s[lx->i]))
-		lx->i++;
-	if (lx->i < lx->n && s[lx->i] == '.') {
-		lx->i++;
-		while (lx->i < lx->n && isdigit((unsigned char)s[lx->i]))
-			lx->i++;
-	}
-	if (lx->i < lx->n && (s[lx->i] == 'e' || s[lx->i] == 'E')) {
-		size_t j = lx->i + 1;
-		if (j < lx->n && (s[j] == '+' || s[j] == '-'))
-			j++;
-		if (j < lx->n && isdigit((unsigned char)s[j])) {
-			while (j < lx->n && isdigit((unsigned char)s[j]))
-				j++;
-			lx->i = j;
+	uint64_t m = 0;
+	int digits = 0, frac = -1;
+	size_t i = 0;
+	for (; i < len; i++) {
+		char c = s[i];
+		if (c >= '0' && c <= '9') {
+			if (m || c != '0')
+				digits++;
+			m = m * 10 + (uint64_t)(c - '0');
+			if (frac >= 0)
+				frac++;
+		} else if (c == '.' && frac < 0) {
+			frac = 0;
+		} else {
+			break;
 		}
 	}
+	if (i == len && digits <= 15 && frac <= 22) {
+		static const double p10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+		                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+		return frac > 0 ? (double)m / p10[frac] : (double)m;
+	}
 	char buf[128];
-	size_t len = lx->i - start;
-	struct token *t = push(lx, TOK_NUMBER, here(lx, start));
 	if (len >= sizeof buf) {
 		char *tmp = malloc(len + 1);
 		if (!tmp) abort();
-		memcpy(tmp, s + start, len);
+		memcpy(tmp, s, len);
 		tmp[len] = 0;
-		t->num = strtod(tmp, NULL);
+		double v = strtod(tmp, NULL);
 		free(tmp);
-	} else {
-		memcpy(buf, s + start, len);
-		buf[len] = 0;
-		t->num = strtod(buf, NULL);
+		return v;
 	}
+	memcpy(buf, s, len);
+	buf[len] = 0;
+	return strtod(buf, NULL);
+}
+
+/* The end of the number starting at s[i] (digits, '.', digits, exponent). */
+static size_t number_end(const char *s, size_t i, size_t n)
+{
+	while (i < n && isdigit((unsigned char)s[i]))
+		i++;
+	if (i < n && s[i] == '.') {
+		i++;
+		while (i < n && isdigit((unsigned char)s[i]))
+			i++;
+	}
+	if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+		size_t j = i + 1;
+		if (j < n && (s[j] == '+' || s[j] == '-'))
+			j++;
+		if (j < n && isdigit((unsigned char)s[j])) {
+			while (j < n && isdigit((unsigned char)s[j]))
+				j++;
+			i = j;
+		}
+	}
+	return i;
+}
+
+static bool lex_number(struct lexer *lx)
+{
+	size_t start = lx->i;
+	lx->i = number_end(lx->s, lx->i, lx->n);
+	struct token *t = push(lx, TOK_NUMBER, here(lx, start));
+	t->num = number_value(lx->s + start, lx->i - start);
 	return true;
+}
+
+/* ---- runs of literal vectors in mesh2 lists ---- */
+
+/* Where the lexer stands, to come back to. */
+struct mark {
+	size_t i, line_start;
+	uint32_t line;
+};
+
+static struct mark mark_of(const struct lexer *lx)
+{
+	struct mark m = {lx->i, lx->line_start, lx->line};
+	return m;
+}
+
+static void mark_restore(struct lexer *lx, struct mark m)
+{
+	lx->i = m.i;
+	lx->line_start = m.line_start;
+	lx->line = m.line;
+}
+
+/* A signed number at lx->i (no space between sign and digits, as in the
+ * vectors exporters write); false, reading nothing, if there is none. */
+static bool run_number(struct lexer *lx, double *out)
+{
+	const char *s = lx->s;
+	size_t i = lx->i, n = lx->n;
+	bool neg = false;
+	if (i < n && (s[i] == '-' || s[i] == '+')) {
+		neg = s[i] == '-';
+		i++;
+	}
+	if (!(i < n && (isdigit((unsigned char)s[i]) || (s[i] == '.' && i + 1 < n && isdigit((unsigned char)s[i + 1])))))
+		return false;
+	size_t end = number_end(s, i, n);
+	/* A letter or '_' right after would make this something else. */
+	if (end < n && (isalpha((unsigned char)s[end]) || s[end] == '_'))
+		return false;
+	double v = number_value(s + i, end - i);
+	*out = neg ? -v : v;
+	lx->i = end;
+	return true;
+}
+
+/* One vector `<n, n[, n]>` into v; returns its size (2 or 3) or 0, after
+ * which the caller restores the position. */
+static int run_vector(struct lexer *lx, double v[3])
+{
+	lx->i++; /* '<' */
+	int k = 0;
+	for (;;) {
+		if (!skip_space(lx) || k == 3 || !run_number(lx, &v[k]))
+			return 0;
+		k++;
+		if (!skip_space(lx) || lx->i >= lx->n)
+			return 0;
+		char c = lx->s[lx->i];
+		if (c == '>') {
+			lx->i++;
+			return k >= 2 ? k : 0;
+		}
+		if (c != ',')
+			return 0;
+		lx->i++;
+	}
+}
+
+/* At a '<' inside a mesh2 list: check the longest run of literal vectors
+ * of one size that are not operands of an operator (a vector followed by
+ * '*' or '-' is left to the expression parser), and push it as one
+ * TOK_NUMLIST token. Returns false, reading nothing, if the first vector
+ * does not qualify. */
+static bool lex_run(struct lexer *lx)
+{
+	struct numlist l = {.start = lx->i, .line_start = lx->line_start, .line = lx->line};
+	struct srcpos first = here(lx, lx->i);
+	int dim = 0;
+	for (;;) {
+		struct mark start = mark_of(lx);
+		double v[3];
+		int k = lx->i < lx->n && lx->s[lx->i] == '<' ? run_vector(lx, v) : 0;
+		if (k == 0 || (dim && k != dim)) {
+			mark_restore(lx, start);
+			break;
+		}
+		/* What follows must end the item: a comma, another vector, the
+		 * list's '}', a texture index or a directive. */
+		struct mark after = mark_of(lx);
+		if (!skip_space(lx)) {
+			mark_restore(lx, start);
+			break;
+		}
+		char c = lx->i < lx->n ? lx->s[lx->i] : 0;
+		if (!(c == ',' || c == '<' || c == '}' || c == '#' || isdigit((unsigned char)c))) {
+			mark_restore(lx, start);
+			break;
+		}
+		dim = k;
+		l.count++;
+		if (c == ',')
+			lx->i++;
+		else if (c != '<')
+			mark_restore(lx, after);
+		if (!skip_space(lx)) {
+			mark_restore(lx, after);
+			break;
+		}
+	}
+	if (l.count == 0)
+		return false;
+	l.dim = (uint32_t)dim;
+	struct numlist *copy = malloc(sizeof *copy);
+	if (!copy) abort();
+	*copy = l;
+	if (lx->nblocks == lx->bcap) {
+		lx->bcap = lx->bcap ? 2 * lx->bcap : 8;
+		lx->blocks = realloc(lx->blocks, lx->bcap * sizeof *lx->blocks);
+		if (!lx->blocks) abort();
+	}
+	lx->blocks[lx->nblocks++] = copy;
+	struct token *t = push(lx, TOK_NUMLIST, first);
+	t->list = copy;
+	return true;
+}
+
+void lex_numlist_begin(struct numlist_iter *it, const struct srcmgr *sm, uint32_t file, const struct numlist *l)
+{
+	const struct srcfile *f = sm->files[file];
+	it->s = f->text;
+	it->n = f->len;
+	it->i = l->start;
+	it->line_start = l->line_start;
+	it->line = l->line;
+	it->file = file;
+}
+
+void lex_numlist_next(struct numlist_iter *it, double v[3], struct srcpos *pos)
+{
+	/* The run was checked when it was lexed: read it again the same way. */
+	struct lexer lx = {.s = it->s, .n = it->n, .i = it->i, .line = it->line, .line_start = it->line_start,
+	                   .file = it->file};
+	skip_space(&lx);
+	*pos = here(&lx, lx.i);
+	run_vector(&lx, v);
+	skip_space(&lx);
+	if (lx.i < lx.n && lx.s[lx.i] == ',')
+		lx.i++;
+	it->i = lx.i;
+	it->line = lx.line;
+	it->line_start = lx.line_start;
+}
+
+/* Can a '<' here begin an item of a mesh2 list, not an operand? After '{',
+ * ',', a number (the count, a texture index) or the '>' of a vector. */
+static bool starts_item(const struct lexer *lx)
+{
+	if (lx->ntoks == 0)
+		return false;
+	switch (lx->toks[lx->ntoks - 1].kind) {
+	case TOK_LBRACE: case TOK_COMMA: case TOK_NUMBER: case TOK_GT: case TOK_NUMLIST:
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* Does the token before the '{' just pushed open a mesh2 list? */
+static bool opens_list(const struct lexer *lx)
+{
+	if (lx->ntoks < 2)
+		return false;
+	const struct token *k = &lx->toks[lx->ntoks - 2];
+	if (k->kind != TOK_KEYWORD)
+		return false;
+	switch (k->kw) {
+	case KW_VERTEX_VECTORS: case KW_NORMAL_VECTORS: case KW_UV_VECTORS:
+	case KW_FACE_INDICES: case KW_NORMAL_INDICES: case KW_UV_INDICES:
+		return true;
+	default:
+		return false;
+	}
 }
 
 static void sput(struct lexer *lx, size_t *len, char c)
@@ -297,8 +519,15 @@ bool lex_file(struct srcmgr *sm, uint32_t file, struct diag *d)
 			r = lex_word(&lx);
 		else if (c == '"')
 			r = lex_string(&lx);
-		else
+		else if (c == '<' && lx.in_list && starts_item(&lx) && lex_run(&lx))
+			r = true;
+		else {
 			r = lex_punct(&lx);
+			if (r && c == '{')
+				lx.in_list = opens_list(&lx);
+			else if (c == '}')
+				lx.in_list = false;
+		}
 		if (!r) {
 			ok = false;
 			break;
@@ -308,6 +537,8 @@ bool lex_file(struct srcmgr *sm, uint32_t file, struct diag *d)
 	free(lx.sbuf);
 	f->toks = lx.toks;
 	f->ntoks = lx.ntoks;
+	f->blocks = lx.blocks;
+	f->nblocks = lx.nblocks;
 	return ok;
 }
 
@@ -320,6 +551,7 @@ static const char *const kind_names[TOK__COUNT] = {
 	[TOK_PLUS] = "+", [TOK_MINUS] = "-", [TOK_STAR] = "*", [TOK_SLASH] = "/",
 	[TOK_COMMA] = ",", [TOK_SEMI] = ";", [TOK_DOT] = ".", [TOK_COLON] = ":",
 	[TOK_QUESTION] = "?", [TOK_BANG] = "!", [TOK_AMP] = "&", [TOK_BAR] = "|",
+	[TOK_NUMLIST] = "list of vectors",
 };
 
 const char *lex_kind_name(enum tok_kind k)
@@ -335,6 +567,7 @@ const char *lex_describe(const struct token *t, char *buf, size_t size)
 	case TOK_KEYWORD: snprintf(buf, size, "'%s'", kw_names[t->kw]); break;
 	case TOK_NUMBER: snprintf(buf, size, "number %.10g", t->num); break;
 	case TOK_STRING: snprintf(buf, size, "string \"%.40s\"", t->str); break;
+	case TOK_NUMLIST: snprintf(buf, size, "a list of %u vectors", (unsigned)t->list->count); break;
 	default: snprintf(buf, size, "'%s'", lex_kind_name((enum tok_kind)t->kind)); break;
 	}
 	return buf;

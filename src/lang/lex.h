@@ -23,7 +23,23 @@ enum tok_kind {
 	TOK_PLUS, TOK_MINUS, TOK_STAR, TOK_SLASH,
 	TOK_COMMA, TOK_SEMI, TOK_DOT, TOK_COLON, TOK_QUESTION,
 	TOK_BANG, TOK_AMP, TOK_BAR,
+	TOK_NUMLIST,  /* list: a run of literal vectors inside a mesh2 list */
 	TOK__COUNT
+};
+
+/* A run of literal vectors `<n, n, n>` (all of 2 or all of 3 numbers,
+ * commas between them optional) found inside the braces of a mesh2 list
+ * (vertex_vectors, normal_vectors, uv_vectors, face_indices,
+ * normal_indices, uv_indices). The lexer checks the run and keeps only
+ * where it is, instead of 8 tokens per vector; the parser of those lists
+ * reads the numbers from the text with lex_numlist_next. This is what
+ * keeps a million-triangle mesh2 small and quick. Owned by the file. */
+struct numlist {
+	uint32_t count;      /* vectors */
+	uint32_t dim;        /* numbers per vector: 2 or 3 */
+	size_t start;        /* offset of the first '<' in the file's text */
+	size_t line_start;   /* offset of the start of its line */
+	uint32_t line;
 };
 
 struct token {
@@ -33,6 +49,7 @@ struct token {
 	union {
 		double num;
 		const char *str;
+		const struct numlist *list;
 	};
 };
 
@@ -40,6 +57,16 @@ struct token {
  * lexed). On a lexical error, reports it through d and returns false; the
  * token array then ends with TOK_EOF at the error. */
 bool lex_file(struct srcmgr *sm, uint32_t file, struct diag *d);
+
+/* Reading a numlist's vectors in order. */
+struct numlist_iter {
+	const char *s;
+	size_t n, i, line_start;
+	uint32_t file, line;
+};
+void lex_numlist_begin(struct numlist_iter *it, const struct srcmgr *sm, uint32_t file, const struct numlist *l);
+/* The next vector into v (dim numbers) and where its '<' is. */
+void lex_numlist_next(struct numlist_iter *it, double v[3], struct srcpos *pos);
 
 /* A printable description of a token for messages: "'sphere'", "number 3",
  * "end of file". Writes into buf and returns it. */

@@ -436,85 +436,115 @@ static void flush_face(struct parser *p, struct mesh_builder *mb, struct pending
 	f->set = false;
 }
 
+/* Reading one mesh2 list. */
+struct list_state {
+	enum mesh2_list which;
+	size_t n, i;              /* entries announced, read */
+	struct srcpos at;         /* the count, for messages about the whole list */
+	struct pending_face face;
+};
+
+/* One vector item c[0..dim) of the list at vat. */
+static void list_vector(struct parser *p, struct mesh_builder *mb, struct list_state *st, const double *c, int dim,
+                        struct srcpos vat)
+{
+	enum mesh2_list which = st->which;
+	int want = which == M2_UVS ? 2 : 3;
+	if (dim < want)
+		parse_error_at(p, vat, "expected a %d-component vector in %s", want, m2_names[which]);
+	if (st->i == st->n)
+		parse_error_at(p, st->at, "%s says %zu %s but has more", m2_names[which], st->n, m2_items[which]);
+	uint32_t idx[3];
+	if (which >= M2_FACES) {
+		size_t lim = which == M2_FACES ? mesh_vertex_count(mb)
+		             : which == M2_NORMAL_INDICES ? mesh_normal_count(mb) : mesh_uv_count(mb);
+		const char *name = which == M2_FACES ? "vertex" : which == M2_NORMAL_INDICES ? "normal" : "uv";
+		for (int k = 0; k < 3; k++)
+			idx[k] = list_index(p, c[k], lim, name, vat);
+	}
+	switch (which) {
+	case M2_VERTICES: mesh_add_vertex(mb, v3(c[0], c[1], c[2])); break;
+	case M2_NORMALS: mesh_add_normal(mb, v3(c[0], c[1], c[2])); break;
+	case M2_UVS: mesh_add_uv(mb, c[0], c[1]); break;
+	case M2_FACES:
+		flush_face(p, mb, &st->face);
+		memcpy(st->face.v, idx, sizeof idx);
+		st->face.ntex = 0;
+		st->face.at = vat;
+		st->face.set = true;
+		break;
+	case M2_NORMAL_INDICES: mesh_set_face_normals(mb, (uint32_t)st->i, idx); break;
+	case M2_UV_INDICES: mesh_set_face_uvs(mb, (uint32_t)st->i, idx); break;
+	default: break;
+	}
+	st->i++;
+}
+
 /* list '{' count [','] item { [','] item } '}', as POV-Ray reads mesh2's
  * lists (commas optional). face_indices items are <a,b,c> followed by 0, 1
- * or 3 texture indices when a texture_list was given. */
+ * or 3 texture indices when a texture_list was given. Runs of literal
+ * vectors come from the lexer as one TOK_NUMLIST token. */
 static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mesh2_list which)
 {
 	parse_expect(p, TOK_LBRACE);
-	struct srcpos at = parse_peek(p)->pos;
-	size_t n = list_count(p, m2_items[which]);
+	struct list_state st = {.which = which, .at = parse_peek(p)->pos};
+	st.n = list_count(p, m2_items[which]);
 	size_t nfaces = mesh_face_count(mb);
 	/* The first n faces get normals or uv vectors; the rest stay flat. */
-	if ((which == M2_NORMAL_INDICES || which == M2_UV_INDICES) && n > nfaces)
-		parse_error_at(p, at, "%s has %zu entries but there are only %zu faces", m2_names[which], n, nfaces);
-	struct pending_face face = {0};
-	size_t i = 0;
+	if ((which == M2_NORMAL_INDICES || which == M2_UV_INDICES) && st.n > nfaces)
+		parse_error_at(p, st.at, "%s has %zu entries but there are only %zu faces", m2_names[which], st.n, nfaces);
 	for (;;) {
 		opt_comma(p);
-		if (parse_is(p, TOK_RBRACE))
+		const struct token *t = parse_peek(p);
+		if (t->kind == TOK_RBRACE)
 			break;
-		struct srcpos vat = parse_peek(p)->pos;
+		struct srcpos vat = t->pos;
+		if (t->kind == TOK_NUMLIST && which != M2_TEXTURES) {
+			const struct numlist *l = t->list;
+			struct numlist_iter it;
+			lex_numlist_begin(&it, p->sm, vat.file, l);
+			for (uint32_t k = 0; k < l->count; k++) {
+				double c[3];
+				struct srcpos kat;
+				lex_numlist_next(&it, c, &kat);
+				list_vector(p, mb, &st, c, (int)l->dim, kat);
+			}
+			parse_advance(p);
+			continue;
+		}
 		if (which == M2_TEXTURES) {
 			if (!parse_is_kw(p, KW_TEXTURE))
 				parse_expected(p, "a texture or '}'");
-			if (i == n)
-				parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
+			if (st.i == st.n)
+				parse_error_at(p, st.at, "%s says %zu %s but has more", m2_names[which], st.n, m2_items[which]);
 			mesh_texture(p, mb);
-			i++;
+			st.i++;
 			continue;
 		}
 		if (which == M2_UVS) {
 			double uv[2];
-			if (i == n)
-				parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
 			uv_value(p, uv);
-			mesh_add_uv(mb, uv[0], uv[1]);
-			i++;
+			list_vector(p, mb, &st, uv, 2, vat);
 			continue;
 		}
 		struct value v = parse_expression(p);
-		if (which == M2_FACES && v.kind == VAL_FLOAT && face.set) {
+		if (which == M2_FACES && v.kind == VAL_FLOAT && st.face.set) {
 			size_t nt = mesh_texture_count(mb);
 			if (nt == 0)
 				parse_error_at(p, vat, "a face's texture index needs a texture_list before face_indices");
-			if (face.ntex == 3)
+			if (st.face.ntex == 3)
 				parse_error_at(p, vat, "a face has at most 3 texture indices");
-			face.tex[face.ntex++] = list_index(p, v.v[0], nt, "texture", vat);
+			st.face.tex[st.face.ntex++] = list_index(p, v.v[0], nt, "texture", vat);
 			continue;
 		}
 		if (v.kind != VAL_VECTOR || v.n < 3)
 			parse_error_at(p, vat, "expected a 3-component vector in %s, found a %s", m2_names[which],
 			               val_kind_name(v.kind));
-		if (i == n)
-			parse_error_at(p, at, "%s says %zu %s but has more", m2_names[which], n, m2_items[which]);
-		vec3 x = v3(v.v[0], v.v[1], v.v[2]);
-		uint32_t idx[3];
-		size_t lim = which == M2_FACES ? mesh_vertex_count(mb)
-		             : which == M2_NORMAL_INDICES ? mesh_normal_count(mb) : mesh_uv_count(mb);
-		const char *name = which == M2_FACES ? "vertex" : which == M2_NORMAL_INDICES ? "normal" : "uv";
-		if (which >= M2_FACES)
-			for (int k = 0; k < 3; k++)
-				idx[k] = list_index(p, v.v[k], lim, name, vat);
-		switch (which) {
-		case M2_VERTICES: mesh_add_vertex(mb, x); break;
-		case M2_NORMALS: mesh_add_normal(mb, x); break;
-		case M2_FACES:
-			flush_face(p, mb, &face);
-			memcpy(face.v, idx, sizeof idx);
-			face.ntex = 0;
-			face.at = vat;
-			face.set = true;
-			break;
-		case M2_NORMAL_INDICES: mesh_set_face_normals(mb, (uint32_t)i, idx); break;
-		case M2_UV_INDICES: mesh_set_face_uvs(mb, (uint32_t)i, idx); break;
-		default: break;
-		}
-		i++;
+		list_vector(p, mb, &st, v.v, 3, vat);
 	}
-	flush_face(p, mb, &face);
-	if (i < n)
-		parse_error_at(p, at, "%s says %zu %s but has only %zu", m2_names[which], n, m2_items[which], i);
+	flush_face(p, mb, &st.face);
+	if (st.i < st.n)
+		parse_error_at(p, st.at, "%s says %zu %s but has only %zu", m2_names[which], st.n, m2_items[which], st.i);
 	parse_advance(p);
 }
 

@@ -30,6 +30,9 @@ void src_free(struct srcmgr *sm)
 		free(f->text);
 		free(f->lines);
 		free(f->toks);
+		for (size_t b = 0; b < f->nblocks; b++)
+			free(f->blocks[b]);
+		free(f->blocks);
 		free(f);
 	}
 	free(sm->files);

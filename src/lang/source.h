@@ -26,6 +26,8 @@ struct srcfile {
 	size_t nlines;
 	struct token *toks;  /* lexed tokens, ending with TOK_EOF; NULL until lexed */
 	size_t ntoks;
+	void **blocks;       /* the numlists of TOK_NUMLIST tokens (owned) */
+	size_t nblocks;
 };
 
 struct srcmgr {
