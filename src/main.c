@@ -246,6 +246,15 @@ int main(int argc, char **argv)
 		status = 2;
 		goto done;
 	}
+	/* The scene is no longer needed: free it before the image module is
+	 * loaded, so that the two never take memory at the same time. */
+	unsigned features = prep->features;
+	prepared_free(prep);
+	prep = NULL;
+	scene_free(scene);
+	scene = NULL;
+	src_free(sm);
+	sm = NULL;
 	if (opt.output_to_file) {
 		struct img_out io = {
 			.path = opt.output, .format = opt.format, .bits = opt.bits,
@@ -264,7 +273,7 @@ int main(int argc, char **argv)
 		}
 	}
 	if (!opt.quiet) {
-		print_stats(stderr, &st, prep->features, t1 - t0, t2 - t1, t3 - t2, opt.width, opt.height);
+		print_stats(stderr, &st, features, t1 - t0, t2 - t1, t3 - t2, opt.width, opt.height);
 		if (opt.output_to_file)
 			fprintf(stderr, "wrote %s\n", opt.output);
 	}

@@ -104,6 +104,55 @@ static struct aabb box_bounds(const struct object *o)
 	return (struct aabb){b->lo, b->hi};
 }
 
+/* POV-Ray's box uv (measured against POV-Ray 3.7 renders): the six faces
+ * are unfolded into a cross on a grid of 4 x 3 cells of the unit square,
+ * each face filling one cell (1/4 wide, 1/3 high) whatever the box's
+ * proportions:
+ *
+ *          u  0     1/4    1/2    3/4     1
+ *   v 2/3..1         +y
+ *   v 1/3..2/3   -x  +z     +x     -z
+ *   v 0..1/3         -y
+ *
+ * Within its cell a face's u and v follow the box coordinates given in the
+ * table below, each running 0..1 from the box's low to its high side or
+ * the reverse; in POV-Ray's left-handed frame the four side faces read
+ * u rightwards and v = +y upwards seen from inside the box (mirrored from
+ * outside). The face is the hit's part, as for the normal, or the face
+ * nearest p without one. */
+static bool box_uv(const struct object *o, vec3 p, const struct hit *h, double uv[2])
+{
+	/* Per face (part = 2*axis + hi side): grid column and row, the axes
+	 * that u and v follow, and whether each runs reversed. */
+	static const struct { int col, row, ua, va; bool uflip, vflip; } cell[6] = {
+		{0, 1, 2, 1, false, false}, /* -x */
+		{2, 1, 2, 1, true, false},  /* +x */
+		{1, 0, 0, 2, false, false}, /* -y */
+		{1, 2, 0, 2, false, true},  /* +y */
+		{3, 1, 0, 1, true, false},  /* -z */
+		{1, 1, 0, 1, false, false}, /* +z */
+	};
+	const struct box *b = (const struct box *)o;
+	vec3 n = box_normal(o, p, h);
+	int axis = n.x != 0 ? 0 : n.y != 0 ? 1 : 2;
+	int face = 2 * axis + (v3_get(n, axis) > 0);
+	/* p's position across the box along axis a, clamped to [0,1] so that a
+	 * point a rounding error off the face stays in its cell; 0 across a
+	 * flat side (only the flat axis's own faces can be hit then). */
+	double c[2];
+	int ax[2] = {cell[face].ua, cell[face].va};
+	bool flip[2] = {cell[face].uflip, cell[face].vflip};
+	for (int i = 0; i < 2; i++) {
+		double lo = v3_get(b->lo, ax[i]), size = v3_get(b->hi, ax[i]) - lo;
+		double t = size > 0 ? (v3_get(p, ax[i]) - lo) / size : 0;
+		t = t > 0 ? (t < 1 ? t : 1) : 0; /* also maps NaN to 0 */
+		c[i] = flip[i] ? 1 - t : t;
+	}
+	uv[0] = (cell[face].col + c[0]) / 4;
+	uv[1] = (cell[face].row + c[1]) / 3;
+	return true;
+}
+
 static struct object *box_copy(const struct object *o)
 {
 	struct box *c = malloc(sizeof *c);
@@ -119,6 +168,7 @@ static const struct object_ops box_ops = {
 	.inside = box_inside,
 	.normal = box_normal,
 	.bounds = box_bounds,
+	.uv = box_uv,
 	.copy = box_copy,
 };
 

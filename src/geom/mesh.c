@@ -5,6 +5,7 @@
 #include "math/hash.h"
 
 #include <float.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,6 +14,8 @@ enum {
 	LEAF_MIN = 2,    /* nodes this small are leaves: halves the node count of sparse meshes */
 	LEAF_MAX = 4,    /* triangles per leaf at most */
 	DEPTH_MAX = 64,  /* past this depth, nodes are split at the middle of their list */
+	PAR_MIN = 1 << 16, /* subtrees this large are built on a thread of their own... */
+	PAR_DEPTH = 2,     /* ...down to this depth (at most 4 subtrees at once) */
 	STACK_MAX = 128, /* > DEPTH_MAX + 32 + 1: the deepest tree a 2^32 list can give */
 };
 
@@ -377,6 +380,55 @@ static inline void cbox_add(struct cbox *c, const struct bref *r)
 	}
 }
 
+static void build_node(struct build *b, uint32_t ni, uint32_t first, uint32_t n, int depth, const struct cbox *cb);
+
+/* A subtree built on its own thread into its own node array (root at 0). */
+struct subtree {
+	struct build b;
+	uint32_t first, n;
+	int depth;
+	struct cbox cb;
+};
+
+static void *subtree_main(void *arg)
+{
+	struct subtree *s = arg;
+	build_node(&s->b, 0, s->first, s->n, s->depth, &s->cb);
+	return NULL;
+}
+
+/* Build the children l (over nl references from first) and l + 1 (the nr
+ * after them): the left one on another thread, the right one here. The
+ * references of the two are disjoint ranges, so only the node arrays need
+ * keeping apart; the left one's nodes are appended afterwards with their
+ * child indices moved. The result is the tree the sequential build makes,
+ * with its nodes in another order. */
+static void build_pair_parallel(struct build *b, uint32_t l, uint32_t first, uint32_t nl, uint32_t nr, int depth,
+                                const struct cbox *lc, const struct cbox *rc)
+{
+	struct subtree s = {.b = *b, .first = first, .n = nl, .depth = depth, .cb = *lc};
+	s.b.nodes = malloc((2 * (size_t)nl - 1) * sizeof *s.b.nodes);
+	if (!s.b.nodes) abort();
+	s.b.nnodes = 1;
+	pthread_t th;
+	bool threaded = pthread_create(&th, NULL, subtree_main, &s) == 0;
+	if (!threaded)
+		subtree_main(&s);
+	build_node(b, l + 1, first + nl, nr, depth, rc);
+	if (threaded)
+		pthread_join(th, NULL);
+	/* Sub-node k >= 1 goes to off + k - 1; node 0 to l. */
+	uint32_t off = b->nnodes;
+	for (uint32_t k = 0; k < s.b.nnodes; k++) {
+		struct mesh_node nd = s.b.nodes[k];
+		if (nd.count == 0)
+			nd.first = off + nd.first - 1;
+		b->nodes[k == 0 ? l : off + k - 1] = nd;
+	}
+	b->nnodes += s.b.nnodes - 1;
+	free(s.b.nodes);
+}
+
 /* Build node ni over ref[first, first+n), whose centroids lie in *cb.
  * Wald's binned SAH (2007): the references are binned along the axis
  * where their centroids spread most, the best of the bin boundaries is
@@ -493,8 +545,12 @@ static void build_node(struct build *b, uint32_t ni, uint32_t first, uint32_t n,
 	nd->first = l;
 	nd->count = 0;
 	nd->axis = (uint16_t)axis;
-	build_node(b, l, first, mid, depth + 1, &lc);
-	build_node(b, l + 1, first + mid, n - mid, depth + 1, &rc);
+	if (n >= PAR_MIN && depth < PAR_DEPTH)
+		build_pair_parallel(b, l, first, mid, n - mid, depth + 1, &lc, &rc);
+	else {
+		build_node(b, l, first, mid, depth + 1, &lc);
+		build_node(b, l + 1, first + mid, n - mid, depth + 1, &rc);
+	}
 	nd = &b->nodes[ni];
 	const struct mesh_node *L = &b->nodes[l], *R = &b->nodes[l + 1];
 	for (int a = 0; a < 3; a++) {

@@ -89,6 +89,29 @@ static struct aabb sphere_bounds(const struct object *o)
 	return b;
 }
 
+/* POV-Ray's spherical uv (measured against POV-Ray 3.7 renders): with d
+ * the point relative to the centre, u = atan2(d.z, d.x) / 2pi taken into
+ * [0,1) -- 0 on the +x side, rising through +z (0.25), -x (0.5) and -z
+ * (0.75), so the seam is the half-plane z = 0, x > 0 -- and
+ * v = 1/2 + latitude/pi, 0 at the -y pole and 1 at the +y pole. atan2 of
+ * the height over the horizontal distance gives the latitude without
+ * dividing by the radius; at the poles (and the centre) u is 0. */
+static bool sphere_uv(const struct object *o, vec3 p, const struct hit *h, double uv[2])
+{
+	const struct sphere *s = (const struct sphere *)o;
+	static const double TWO_PI = 6.28318530717958647692, PI = 3.14159265358979323846;
+	(void)h;
+	vec3 d = v3_sub(p, s->center);
+	double u = atan2(d.z, d.x) / TWO_PI;
+	if (u < 0)
+		u += 1;
+	if (!(u < 1)) /* -tiny + 1 rounds to 1: that is the seam, u = 0 */
+		u = 0;
+	uv[0] = u;
+	uv[1] = 0.5 + atan2(d.y, hypot(d.x, d.z)) / PI;
+	return true;
+}
+
 static struct object *sphere_copy(const struct object *o)
 {
 	struct sphere *c = malloc(sizeof *c);
@@ -104,6 +127,7 @@ static const struct object_ops sphere_ops = {
 	.inside = sphere_inside,
 	.normal = sphere_normal,
 	.bounds = sphere_bounds,
+	.uv = sphere_uv,
 	.copy = sphere_copy,
 };
 

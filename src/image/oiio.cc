@@ -1,5 +1,6 @@
-// oiio.cc: writes images through OpenImageIO behind the C API in oiio.h.
-// Nothing C++ leaks out: every exception and error becomes a return code.
+// oiio.cc: the lucent-oiio.so module: writes images through OpenImageIO
+// behind the C entry points named in oiio.h. Nothing C++ leaks out: every
+// exception and error becomes a return code.
 #include "image/oiio.h"
 
 #include <OpenImageIO/imageio.h>
@@ -18,7 +19,9 @@ static void set_err(char *err, unsigned n, const std::string &msg)
 	}
 }
 
-extern "C" int oiio_write(const char *path, const char *format, int width, int height, int channels,
+extern "C" oiio_write_fn lucent_oiio_write;
+
+extern "C" int lucent_oiio_write(const char *path, const char *format, int width, int height, int channels,
                           enum oiio_type type, const void *pixels, int srgb, char *err, unsigned errsize)
 {
 	try {

@@ -88,8 +88,16 @@ bool parse_transform_item(struct parser *p, struct xform *out)
 	case KW_MATRIX: {
 		parse_advance(p);
 		double m[12];
-		if (parse_number_list(p, m, 12) != 12)
-			parse_error_at(p, at, "a matrix needs exactly 12 numbers");
+		int got = parse_number_list(p, m, 12);
+		if (got != 12)
+			parse_error_at(p, at, "a matrix needs exactly 12 numbers, found %d", got);
+		/* POV-Ray turns an all-zero column of the 3x3 part into the
+		 * identity's, with a warning, as it does a scale by 0. */
+		for (int c = 0; c < 3; c++)
+			if (m[c] == 0 && m[3 + c] == 0 && m[6 + c] == 0) {
+				parse_warning_at(p, at, "matrix column %d is all 0: changed to the identity's", c + 1);
+				m[4 * c] = 1;
+			}
 		*out = xform_matrix(m);
 		if (mat_is_identity(&out->inv) && !mat_is_identity(&out->fwd))
 			parse_error_at(p, at, "this matrix cannot be inverted (it flattens space)");
@@ -231,7 +239,7 @@ static void parse_shape_args(struct parser *p, struct shape_args *a)
 	case KW_DISC: /* disc '{' VECTOR ',' VECTOR ',' FLOAT [',' FLOAT] */
 		a->v[0] = parse_vector(p);
 		opt_comma(p);
-		a->v[1] = nonzero_vector(p, "a disc's normal");
+		a->v[1] = parse_vector(p); /* POV-Ray accepts a zero normal */
 		opt_comma(p);
 		a->f[0] = parse_float(p);
 		a->f[1] = 0;
@@ -274,10 +282,11 @@ static void parse_shape_args(struct parser *p, struct shape_args *a)
 		break;
 	case KW_POLY: { /* poly '{' INT ',' < floats > */
 		struct srcpos at = parse_peek(p)->pos;
-		double o = parse_float(p);
-		if (o != (int)o || o < POLY_MIN_ORDER || o > POLY_MAX_ORDER)
-			parse_error_at(p, at, "a poly's order must be a whole number from %d to %d, found %g",
-			               POLY_MIN_ORDER, POLY_MAX_ORDER, o);
+		/* POV-Ray truncates a fractional order. */
+		double o = trunc(parse_float(p));
+		if (!(o >= POLY_MIN_ORDER && o <= POLY_MAX_ORDER))
+			parse_error_at(p, at, "a poly's order must be from %d to %d, found %g", POLY_MIN_ORDER,
+			               POLY_MAX_ORDER, o);
 		a->order = (int)o;
 		opt_comma(p);
 		poly_coefs(p, a, "a poly");
@@ -286,12 +295,12 @@ static void parse_shape_args(struct parser *p, struct shape_args *a)
 	case KW_SUPERELLIPSOID: { /* superellipsoid '{' VECTOR (e, n) */
 		struct srcpos at = parse_peek(p)->pos;
 		struct value v = parse_expression(p);
-		if (v.kind != VAL_VECTOR || v.n < 2)
-			parse_error_at(p, at, "a superellipsoid needs a 2-component vector <e, n>");
+		if (v.kind != VAL_VECTOR && v.kind != VAL_FLOAT)
+			parse_error_at(p, at, "a superellipsoid needs a vector <e, n>, found a %s", val_kind_name(v.kind));
+		/* A float is promoted to <f, f>; exponents of 0 or less are
+		 * accepted, as by POV-Ray (the shape raises them to 0.001). */
 		a->f[0] = v.v[0];
-		a->f[1] = v.v[1];
-		if (a->f[0] <= 0 || a->f[1] <= 0)
-			parse_error_at(p, at, "a superellipsoid's exponents must be greater than 0");
+		a->f[1] = v.kind == VAL_FLOAT ? v.v[0] : v.v[1];
 		break;
 	}
 	default:
@@ -308,18 +317,19 @@ static void parse_shape_args(struct parser *p, struct shape_args *a)
 static size_t list_count(struct parser *p, const char *what)
 {
 	struct srcpos at = parse_peek(p)->pos;
-	double n = parse_float(p);
-	if (n < 0 || n != floor(n) || n > MESH_MAX_ITEMS)
-		parse_error_at(p, at, "the number of %s must be a whole number from 0 to %u, found %g", what,
-		               MESH_MAX_ITEMS, n);
+	double n = trunc(parse_float(p)); /* POV-Ray truncates fractions */
+	if (!(n >= 0 && n <= MESH_MAX_ITEMS))
+		parse_error_at(p, at, "the number of %s must be from 0 to %u, found %g", what, MESH_MAX_ITEMS, n);
 	return (size_t)n;
 }
 
-/* An index into a list of n entries. */
+/* An index into a list of n entries (a fraction truncated, as by POV-Ray). */
 static uint32_t list_index(struct parser *p, double v, size_t n, const char *what, struct srcpos at)
 {
-	if (v < 0 || v != floor(v) || v >= (double)n)
-		parse_error_at(p, at, "%s index %g is out of range (the list has %zu)", what, v, n);
+	v = trunc(v);
+	if (!(v >= 0 && v < (double)n))
+		parse_error_at(p, at, "%s index %g is out of range (the list has %zu %s)", what, v, n,
+		               n == 1 ? "entry" : "entries");
 	return (uint32_t)v;
 }
 
@@ -449,11 +459,10 @@ static void list_vector(struct parser *p, struct mesh_builder *mb, struct list_s
                         struct srcpos vat)
 {
 	enum mesh2_list which = st->which;
-	int want = which == M2_UVS ? 2 : 3;
-	if (dim < want)
-		parse_error_at(p, vat, "expected a %d-component vector in %s", want, m2_names[which]);
+	double pad[3] = {c[0], dim > 1 ? c[1] : 0, dim > 2 ? c[2] : 0}; /* POV-Ray pads with 0 */
+	c = pad;
 	if (st->i == st->n)
-		parse_error_at(p, st->at, "%s says %zu %s but has more", m2_names[which], st->n, m2_items[which]);
+		parse_error_at(p, vat, "%s has more entries than its count (%zu)", m2_names[which], st->n);
 	uint32_t idx[3];
 	if (which >= M2_FACES) {
 		size_t lim = which == M2_FACES ? mesh_vertex_count(mb)
@@ -492,7 +501,8 @@ static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mes
 	size_t nfaces = mesh_face_count(mb);
 	/* The first n faces get normals or uv vectors; the rest stay flat. */
 	if ((which == M2_NORMAL_INDICES || which == M2_UV_INDICES) && st.n > nfaces)
-		parse_error_at(p, st.at, "%s has %zu entries but there are only %zu faces", m2_names[which], st.n, nfaces);
+		parse_error_at(p, st.at, "%s has %zu entries but there %s only %zu %s", m2_names[which], st.n,
+		               nfaces == 1 ? "is" : "are", nfaces, nfaces == 1 ? "face" : "faces");
 	for (;;) {
 		opt_comma(p);
 		const struct token *t = parse_peek(p);
@@ -516,7 +526,7 @@ static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mes
 			if (!parse_is_kw(p, KW_TEXTURE))
 				parse_expected(p, "a texture or '}'");
 			if (st.i == st.n)
-				parse_error_at(p, st.at, "%s says %zu %s but has more", m2_names[which], st.n, m2_items[which]);
+				parse_error_at(p, vat, "%s has more entries than its count (%zu)", m2_names[which], st.n);
 			mesh_texture(p, mb);
 			st.i++;
 			continue;
@@ -537,14 +547,14 @@ static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mes
 			st.face.tex[st.face.ntex++] = list_index(p, v.v[0], nt, "texture", vat);
 			continue;
 		}
-		if (v.kind != VAL_VECTOR || v.n < 3)
-			parse_error_at(p, vat, "expected a 3-component vector in %s, found a %s", m2_names[which],
-			               val_kind_name(v.kind));
-		list_vector(p, mb, &st, v.v, 3, vat);
+		if (v.kind != VAL_VECTOR)
+			parse_error_at(p, vat, "expected a vector in %s, found a %s", m2_names[which], val_kind_name(v.kind));
+		list_vector(p, mb, &st, v.v, v.n, vat);
 	}
 	flush_face(p, mb, &st.face);
 	if (st.i < st.n)
-		parse_error_at(p, st.at, "%s says %zu %s but has only %zu", m2_names[which], st.n, m2_items[which], st.i);
+		parse_error_at(p, st.at, "%s has %zu %s of the %zu its count says", m2_names[which], st.i,
+		               st.i == 1 ? "entry" : "entries", st.n);
 	parse_advance(p);
 }
 
@@ -567,10 +577,12 @@ static bool parse_mesh2_item(struct parser *p, struct mesh_builder *mb, int *las
 	for (int i = 0; i < 7; i++) {
 		if (t->kw != kws[i])
 			continue;
-		if (i <= *last)
+		if (i == *last)
+			parse_error(p, "a second %s in this mesh2", m2_names[i]);
+		if (i < *last)
 			parse_error(p, "%s must come before %s in mesh2", m2_names[i], m2_names[*last]);
 		if (i == M2_FACES && mesh_vertex_count(mb) == 0)
-			parse_error(p, "face_indices needs vertex_vectors before it");
+			parse_error(p, "face_indices needs vertices before it (vertex_vectors is missing or empty)");
 		*last = i;
 		parse_advance(p);
 		parse_mesh2_list(p, mb, (enum mesh2_list)i);
@@ -836,18 +848,12 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		}
 	}
 	struct object *o = s.o;
-	if (s.clip_is_bound && s.bound_is_clip)
-		parse_error_at(p, at, "clipped_by { bounded_by } and bounded_by { clipped_by } name each other");
-	if (s.clip_is_bound) {
-		if (!o->bound)
-			parse_error_at(p, at, "clipped_by { bounded_by } needs a bounded_by object");
+	/* clipped_by { bounded_by } without a bounded_by object (and the
+	 * reverse) leaves the object as it is, as in POV-Ray. */
+	if (s.clip_is_bound && !s.bound_is_clip && o->bound && !o->clip)
 		o->clip = o->bound;
-	}
-	if (s.bound_is_clip) {
-		if (!o->clip)
-			parse_error_at(p, at, "bounded_by { clipped_by } needs a clipped_by object");
+	if (s.bound_is_clip && !s.clip_is_bound && o->clip && !o->bound)
 		o->bound = o->clip;
-	}
 	if (s.flags)
 		object_set_flags(o, s.flags);
 	/* A CSG's texture goes to the children that have none. */

@@ -1,2 +1,3 @@
-// expect: 2:15: this matrix cannot be inverted (it flattens space)
-sphere { 0, 1 matrix <1,0,0, 0,0,0, 0,0,1, 0,0,0> }
+// expect: 3:15: this matrix cannot be inverted (it flattens space)
+// Rank 2: every point lands in a plane.
+sphere { 0, 1 matrix <1,0,1, 0,1,1, 1,1,2, 0,0,0> }

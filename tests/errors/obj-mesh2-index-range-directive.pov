@@ -1,0 +1,11 @@
+// expect: 9:7: vertex index 5 is out of range (the list has 3 entries)
+mesh2 {
+  vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }
+  face_indices { 3,
+    <0,1,2>,
+#if (1)
+    <2,1,0>,
+#end
+      <0,1,5>
+  }
+}

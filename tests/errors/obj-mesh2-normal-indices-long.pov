@@ -1,0 +1,7 @@
+// expect: 6:32: normal_indices has more entries than its count (1)
+mesh2 {
+  vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }
+  normal_vectors { 1, <0,0,1> }
+  face_indices { 2, <0,1,2>, <2,1,0> }
+  normal_indices { 1, <0,0,0>, <0,0,0> }
+}

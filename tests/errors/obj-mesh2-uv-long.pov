@@ -1,0 +1,6 @@
+// expect: 4:26: uv_vectors has more entries than its count (1)
+mesh2 {
+  vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }
+  uv_vectors { 1, <0,0>, <1,0> }
+  face_indices { 1, <0,1,2> }
+}

@@ -1,0 +1,5 @@
+// expect: 3:41: vertex_vectors has more entries than its count (2)
+mesh2 {
+  vertex_vectors { 2, <0,0,0>, <1,0,0>, <0,1,0> }
+  face_indices { 1, <0,1,2> }
+}

@@ -1,0 +1,2 @@
+// expect: 2:10: undefined identifier 'Thing'
+object { Thing }

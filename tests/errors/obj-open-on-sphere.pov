@@ -1,0 +1,2 @@
+// expect: 2:15: 'open' applies to cylinder and cone only
+sphere { 0, 1 open }
