@@ -209,6 +209,8 @@ int main(int argc, char **argv)
 	double t1 = now();
 	prep = prepare_scene(scene);
 	prep->signature = opt.signature;
+	if (opt.signature)
+		prep->features = 0; /* flat colours: no effect is simulated */
 	double t2 = now();
 
 	int row0 = opt.start_row >= 0 ? options_bound(opt.start_row, opt.height, false) : 0;

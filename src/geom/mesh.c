@@ -927,6 +927,8 @@ static struct texture *mesh_texture_at(const struct object *o, const struct hit 
 	return t == MESH_NONE ? NULL : d->tex[t];
 }
 
+static const struct object_ops mesh_ops;
+
 int mesh_textures_at(const struct object *o, const struct hit *h, struct texture *tex[3], double w[3])
 {
 	const struct mesh_data *d = data_of(o);
@@ -944,6 +946,15 @@ int mesh_textures_at(const struct object *o, const struct hit *h, struct texture
 	tex[1] = d->tex[t->i[1]];
 	tex[2] = d->tex[t->i[2]];
 	return 3;
+}
+
+size_t mesh_texture_list(const struct object *o, struct texture *const **tex)
+{
+	if (o->ops != &mesh_ops)
+		return 0;
+	const struct mesh_data *d = data_of(o);
+	*tex = d->tex;
+	return d->ntex;
 }
 
 static struct object *mesh_copy(const struct object *o)

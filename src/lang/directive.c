@@ -35,11 +35,22 @@ static struct token raw_expect(struct parser *p, enum tok_kind k, const char *wh
  * 1e-10 of zero as zero, to forgive round-off. */
 static bool truthy(double x) { return fabs(x) > 1e-10; }
 
+/* A float inside a directive's parentheses, where comparisons and
+ * logical operators bind (see struct parser's rel_ok). */
+static double inner_float(struct parser *p)
+{
+	bool rel = p->rel_ok;
+	p->rel_ok = true;
+	double v = parse_float(p);
+	p->rel_ok = rel;
+	return v;
+}
+
 /* '(' FLOAT ')', reading nothing after the ')'. */
 static double paren_float(struct parser *p)
 {
 	parse_expect(p, TOK_LPAREN);
-	double v = parse_float(p);
+	double v = inner_float(p);
 	parse_expect(p, TOK_RPAREN);
 	return v;
 }
@@ -183,9 +194,9 @@ static bool case_matches(struct parser *p, enum kw k, double v)
 	if (k == KW_CASE)
 		return fabs(v - paren_float(p)) < 1e-10;
 	parse_expect(p, TOK_LPAREN);
-	double lo = parse_float(p);
+	double lo = inner_float(p);
 	parse_expect(p, TOK_COMMA);
-	double hi = parse_float(p);
+	double hi = inner_float(p);
 	parse_expect(p, TOK_RPAREN);
 	return v >= lo && v <= hi;
 }
@@ -285,13 +296,13 @@ static void dir_for(struct parser *p, struct srcpos at)
 	if (id.kind != TOK_IDENT)
 		raw_expected(p, &id, "the loop variable's name");
 	raw_expect(p, TOK_COMMA, "','");
-	double start = parse_float(p);
+	double start = inner_float(p);
 	parse_expect(p, TOK_COMMA);
-	double end = parse_float(p);
+	double end = inner_float(p);
 	double step = 1;
 	if (parse_accept(p, TOK_COMMA)) {
 		struct srcpos spos = parse_peek(p)->pos;
-		step = parse_float(p);
+		step = inner_float(p);
 		if (step == 0)
 			parse_error_at(p, spos, "a #for step of 0 would never end");
 	}
@@ -430,7 +441,10 @@ size_t parse_array_index(struct parser *p, const struct array *a, const char *na
 		if (!parse_is(p, TOK_LBRACKET))
 			parse_error_at(p, at, "array '%s' has %d dimensions: give an index for each", name, ndims);
 		parse_advance(p);
+		bool rel = p->rel_ok;
+		p->rel_ok = true; /* inside brackets everything binds */
 		struct value e = parse_expression(p);
+		p->rel_ok = rel;
 		parse_need_float(p, &e, "an array index");
 		double i = trunc(e.v[0]);
 		if (i < 0 || i >= dims[d])
@@ -482,8 +496,13 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 					byref = true;
 				}
 			}
-			if (!byref)
+			if (!byref) {
+				/* Inside the call's parentheses everything binds. */
+				bool rel = p->rel_ok;
+				p->rel_ok = true;
 				v = parse_rvalue(p);
+				p->rel_ok = rel;
+			}
 			if (n < m->nparams)
 				sym_set(locals, m->params[n], v);
 			else
@@ -556,9 +575,20 @@ static void run_closing_directives(struct parser *p)
 static void end_declaration(struct parser *p, bool numeric, const char *what)
 {
 	run_closing_directives(p);
-	if (parse_peek_cont(p)->kind == TOK_SEMI)
+	const struct token *t = parse_peek_cont(p);
+	if (t->kind == TOK_SEMI) {
 		parse_advance(p);
-	else if (numeric && p->version >= 3.5)
+		return;
+	}
+	switch (t->kind) {
+	case TOK_LT: case TOK_GT: case TOK_LE: case TOK_GE: case TOK_EQ: case TOK_NE:
+	case TOK_AMP: case TOK_BAR: case TOK_QUESTION:
+		parse_error_at(p, t->pos, "'%s' outside parentheses: POV-Ray compares and tests only inside "
+		               "them, as in (A < B)", lex_kind_name((enum tok_kind)t->kind));
+	default:
+		break;
+	}
+	if (numeric && p->version >= 3.5)
 		parse_error_at(p, p->prev.pos, "expected ';' after the value of '%s': POV-Ray needs it for floats, vectors and colors", what);
 }
 

@@ -45,8 +45,10 @@ static const struct {
 	[OP_ADD] = {4}, [OP_SUB] = {4}, [OP_MUL] = {5}, [OP_DIV] = {5},
 };
 
-static enum op binop(enum tok_kind k, bool in_vector)
+static enum op binop(enum tok_kind k, bool in_vector, bool rel_ok)
 {
+	if (!rel_ok && k != TOK_PLUS && k != TOK_MINUS && k != TOK_STAR && k != TOK_SLASH)
+		return OP_NONE;
 	switch (k) {
 	case TOK_BAR: return OP_OR;
 	case TOK_AMP: return OP_AND;
@@ -138,7 +140,7 @@ static struct value parse_binary(struct parser *p, int min_prec, bool in_vector)
 	struct value a = parse_unary(p);
 	for (;;) {
 		const struct token *t = parse_peek_cont(p);
-		enum op op = binop((enum tok_kind)t->kind, in_vector);
+		enum op op = binop((enum tok_kind)t->kind, in_vector, p->rel_ok);
 		if (op == OP_NONE || ops[op].prec < min_prec)
 			return a;
 		struct srcpos at = t->pos;
@@ -154,7 +156,7 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 	if (++p->expr_depth > MAX_EXPR_DEPTH)
 		parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
 	struct value c = parse_binary(p, 1, in_vector);
-	if (parse_peek_cont(p)->kind == TOK_QUESTION) {
+	if (p->rel_ok && parse_peek_cont(p)->kind == TOK_QUESTION) {
 		need_float(p, &c, "the condition of '?:'");
 		c.v[0] = truthy(c.v[0]);
 		parse_advance(p);
@@ -360,8 +362,14 @@ static struct value parse_keyword_primary(struct parser *p)
 		parse_advance(p);
 		return parse_color_body(p, at);
 	default:
-		if (builtin_is_function(k))
-			return builtin_call(p);
+		if (builtin_is_function(k)) {
+			/* Inside a call's parentheses everything binds. */
+			bool rel = p->rel_ok;
+			p->rel_ok = true;
+			struct value r = builtin_call(p);
+			p->rel_ok = rel;
+			return r;
+		}
 	}
 	parse_expected(p, "an expression");
 }
@@ -417,7 +425,10 @@ static struct value parse_primary(struct parser *p)
 	}
 	case TOK_LPAREN: {
 		parse_advance(p);
+		bool rel = p->rel_ok;
+		p->rel_ok = true;
 		struct value v = parse_cond(p, false);
+		p->rel_ok = rel;
 		parse_expect(p, TOK_RPAREN);
 		v.pos = at;
 		return v;
@@ -455,7 +466,12 @@ static struct value parse_primary(struct parser *p)
 		if ((c.kind == VAL_FUNCTION || c.kind == VAL_SPLINE) && parse_peek_cont(p)->kind == TOK_LPAREN) {
 			struct value r;
 			if (c.kind == VAL_FUNCTION) {
+			{
+				bool rel = p->rel_ok;
+				p->rel_ok = true;
 				r = parse_call_function(p, c.fn, at);
+				p->rel_ok = rel;
+			}
 			} else {
 				parse_advance(p);
 				struct value tv = parse_expression(p);

@@ -856,8 +856,9 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		o->bound = o->clip;
 	if (s.flags)
 		object_set_flags(o, s.flags);
-	/* A CSG's texture goes to the children that have none. */
-	if (is_csg && o->tex)
+	/* A CSG's texture goes to the children that have none (also when it
+	 * is given to object { CsgIdentifier }). */
+	if (csg_kind_of(o, NULL) && o->tex)
 		object_fill_texture(o, o->tex);
 	if (!child && p->default_tex)
 		object_fill_texture(o, p->default_tex);

@@ -72,6 +72,11 @@ struct parser {
 	struct symtab *globals;
 	double version;
 	int expr_depth;
+	/* Comparisons, '&', '|' and '?:' bind only inside parentheses (a
+	 * group or a call's argument list), as in POV-Ray: at the top level a
+	 * '<' after a complete value begins the next vector, so that
+	 * `box { <0,0,0> <1,1,1> }` is two corners. */
+	bool rel_ok;
 	int directive_depth;         /* directives inside directives' operands */
 
 	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */

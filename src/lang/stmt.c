@@ -400,7 +400,20 @@ static struct array *parse_array(struct parser *p)
 
 static void free_pigment_cb(void *x) { free(x); }
 
+static bool item_value(struct parser *p, struct value *out);
+
+/* Inside a scene item's braces comparisons do not bind again until a new
+ * parenthesis opens (see struct parser's rel_ok). */
 bool parse_item_value(struct parser *p, struct value *out)
+{
+	bool rel = p->rel_ok;
+	p->rel_ok = false;
+	bool r = item_value(p, out);
+	p->rel_ok = rel;
+	return r;
+}
+
+static bool item_value(struct parser *p, struct value *out)
 {
 	const struct token *t = parse_peek(p);
 	if (t->kind != TOK_KEYWORD)

@@ -2,6 +2,7 @@
 #include "render/prepare.h"
 
 #include "geom/csg.h"
+#include "geom/mesh.h"
 
 #include <stdlib.h>
 
@@ -14,6 +15,22 @@ const char *feature_name(enum feature f)
 	case FEAT_REFLECTION: return "reflection";
 	default: return "?";
 	}
+}
+
+/* The effects a texture's finish can produce. */
+static unsigned finish_features(const struct texture *t)
+{
+	unsigned f = 0;
+	if (!t)
+		return f;
+	const struct finish *fin = &t->finish;
+	if (fin->phong > 0)
+		f |= FEAT_PHONG;
+	if (fin->specular > 0)
+		f |= FEAT_SPECULAR;
+	if (rgb_max(fin->reflection) > 0)
+		f |= FEAT_REFLECTION;
+	return f;
 }
 
 /* The effects the surfaces of o (every leaf of a CSG) can produce. */
@@ -29,15 +46,11 @@ static unsigned object_features(struct object *o, bool *caster)
 	}
 	if (!(o->flags & OBJ_NO_SHADOW))
 		*caster = true;
-	const struct finish *fin = o->tex ? &o->tex->finish : NULL;
-	if (!fin)
-		return f;
-	if (fin->phong > 0)
-		f |= FEAT_PHONG;
-	if (fin->specular > 0)
-		f |= FEAT_SPECULAR;
-	if (rgb_max(fin->reflection) > 0)
-		f |= FEAT_REFLECTION;
+	f |= finish_features(o->tex);
+	struct texture *const *own;
+	size_t n = mesh_texture_list(o, &own); /* a mesh's triangles' textures */
+	for (size_t i = 0; i < n; i++)
+		f |= finish_features(own[i]);
 	return f;
 }
 

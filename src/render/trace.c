@@ -135,15 +135,26 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 			continue;
 		vec3 ldir = v3_scale(lv, 1.0 / dist);
 		double cosi = v3_dot(n, ldir);
-		if (cosi <= 0)
-			continue;
-		if ((feat & FEAT_SHADOWS) && !l->shadowless && shadowed(tr, li, v3_madd(pt, n, eps), ldir, dist, eps))
+		/* The side of the surface the light is on: the one the ray sees,
+		 * or with double_illuminate the other one too. */
+		vec3 ln = n;
+		bool back = false;
+		if (cosi <= 0) {
+			if (!(h.obj->flags & OBJ_DOUBLE_ILLUMINATE) || cosi == 0)
+				continue;
+			ln = v3_neg(n);
+			cosi = -cosi;
+			back = true;
+		}
+		if ((feat & FEAT_SHADOWS) && !l->shadowless && shadowed(tr, li, v3_madd(pt, ln, eps), ldir, dist, eps))
 			continue;
 		rgb lc = l->color;
 		if (fin->diffuse > 0) {
 			double k = fin->diffuse * (fin->brilliance == 1.0 ? cosi : pow(cosi, fin->brilliance));
 			col = rgb_add(col, rgb_scale(rgb_mul(lc, pig), k));
 		}
+		if (back)
+			continue; /* the lit back side shows no highlight toward the viewer */
 		if ((feat & FEAT_PHONG) && fin->phong > 0) {
 			double c = v3_dot(refl, ldir);
 			if (c > 0) {

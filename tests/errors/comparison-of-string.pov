@@ -1,2 +1,2 @@
-// expect: 2:18: '<' needs numbers, vectors or colors (or two strings), not a string
-#declare A = "a" < 2;
+// expect: 2:19: '<' needs numbers, vectors or colors (or two strings), not a string
+#declare A = ("a" < 2);
