@@ -10,7 +10,7 @@ cd "$(dirname "$0")"
 # Build tools and libraries; POV-Ray and its includes are the references the
 # tests and the cross-check scripts compare against.
 PACKAGES="build-essential autoconf automake pkg-config gperf libopenimageio-dev \
-openimageio-tools libcmocka-dev povray povray-includes"
+openimageio-tools libcmocka-dev povray povray-includes python3-numpy"
 
 missing=""
 for p in $PACKAGES; do

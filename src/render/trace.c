@@ -113,8 +113,13 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 	vec3 dir = v3_norm(r->dir);
 	vec3 pt = v3_madd(r->org, r->dir, h.t);
 	vec3 n = object_normal(h.obj, pt, &h);
-	if (v3_dot(n, dir) > 0)
-		n = v3_neg(n); /* shade the side the ray sees */
+	/* Shade the side the ray sees. A ray tangent to the surface sees its
+	 * outside: there n.dir is rounding noise of either sign, and flipping
+	 * on noise would light the point from inside (speckles along the
+	 * tangent). 1e-9 is far above that noise (~1e-16 for unit vectors)
+	 * and far below any real incidence a pixel can show. */
+	if (v3_dot(n, dir) > 1e-9)
+		n = v3_neg(n);
 	double eps = trace_epsilon(pt, r->org);
 
 	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
