@@ -166,4 +166,12 @@ check "SIGINT keeps the old image" cmp -s keep.png victim.png
 check "SIGINT leaves no temporary file" [ -z "$(ls -A | grep '\.tmp')" ]
 check "SIGINT says so" contains err.txt "interrupted"
 
+# --signature: one flat colour per primitive (CSG leaves included), no
+# lighting, the same image every time (tests/cli-signature.png).
+"$LUCENT" +W80 +H60 --signature "$top_srcdir/scenes/csg-ops.pov" +Osig.png > err.txt 2>&1; rc=$?
+check "--signature renders" [ $rc -eq 0 ]
+check "--signature gives the stored image" idiff -fail 0 -failpercent 0 -hardfail 0 \
+	"$top_srcdir/tests/cli-signature.png" sig.png
+check "--signature simulates no effect" grep -q "simulated  (none)\|skipped.*shadows" err.txt
+
 finish
