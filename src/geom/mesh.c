@@ -927,8 +927,6 @@ static struct texture *mesh_texture_at(const struct object *o, const struct hit 
 	return t == MESH_NONE ? NULL : d->tex[t];
 }
 
-static const struct object_ops mesh_ops;
-
 int mesh_textures_at(const struct object *o, const struct hit *h, struct texture *tex[3], double w[3])
 {
 	const struct mesh_data *d = data_of(o);
@@ -948,10 +946,9 @@ int mesh_textures_at(const struct object *o, const struct hit *h, struct texture
 	return 3;
 }
 
-size_t mesh_texture_list(const struct object *o, struct texture *const **tex)
+/* The textures op: the mesh's texture list. */
+static size_t mesh_textures(const struct object *o, struct texture *const **tex)
 {
-	if (o->ops != &mesh_ops)
-		return 0;
 	const struct mesh_data *d = data_of(o);
 	*tex = d->tex;
 	return d->ntex;
@@ -974,6 +971,7 @@ static void mesh_destroy(struct object *o)
 }
 
 static const struct object_ops mesh_ops = {
+	.textures = mesh_textures,
 	.name = "mesh",
 	.intersect = mesh_intersect,
 	.all_hits = mesh_all_hits,

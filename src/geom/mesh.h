@@ -74,10 +74,6 @@ struct object *mesh_new(struct mesh_builder *b, struct srcpos pos);
  * weights in w) or 0 (the object's own). No references are added. */
 int mesh_textures_at(const struct object *o, const struct hit *h, struct texture *tex[3], double w[3]);
 
-/* The mesh's texture list (its triangles' own textures), for prepare's
- * feature analysis; 0 (and *tex untouched) if o is not a mesh. */
-size_t mesh_texture_list(const struct object *o, struct texture *const **tex);
-
 /* What the tests and statistics want to know about a mesh object. */
 struct mesh_stats {
 	size_t triangles;   /* after dropping degenerate faces */

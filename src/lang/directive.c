@@ -39,8 +39,7 @@ static bool truthy(double x) { return fabs(x) > 1e-10; }
  * logical operators bind (see struct parser's rel_ok). */
 static double inner_float(struct parser *p)
 {
-	bool rel = p->rel_ok;
-	p->rel_ok = true;
+	bool rel = parse_set_rel(p, true);
 	double v = parse_float(p);
 	p->rel_ok = rel;
 	return v;
@@ -441,8 +440,7 @@ size_t parse_array_index(struct parser *p, const struct array *a, const char *na
 		if (!parse_is(p, TOK_LBRACKET))
 			parse_error_at(p, at, "array '%s' has %d dimensions: give an index for each", name, ndims);
 		parse_advance(p);
-		bool rel = p->rel_ok;
-		p->rel_ok = true; /* inside brackets everything binds */
+		bool rel = parse_set_rel(p, true); /* inside brackets everything binds */
 		struct value e = parse_expression(p);
 		p->rel_ok = rel;
 		parse_need_float(p, &e, "an array index");
@@ -498,8 +496,7 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			}
 			if (!byref) {
 				/* Inside the call's parentheses everything binds. */
-				bool rel = p->rel_ok;
-				p->rel_ok = true;
+				bool rel = parse_set_rel(p, true);
 				v = parse_rvalue(p);
 				p->rel_ok = rel;
 			}

@@ -364,8 +364,7 @@ static struct value parse_keyword_primary(struct parser *p)
 	default:
 		if (builtin_is_function(k)) {
 			/* Inside a call's parentheses everything binds. */
-			bool rel = p->rel_ok;
-			p->rel_ok = true;
+			bool rel = parse_set_rel(p, true);
 			struct value r = builtin_call(p);
 			p->rel_ok = rel;
 			return r;
@@ -425,8 +424,7 @@ static struct value parse_primary(struct parser *p)
 	}
 	case TOK_LPAREN: {
 		parse_advance(p);
-		bool rel = p->rel_ok;
-		p->rel_ok = true;
+		bool rel = parse_set_rel(p, true);
 		struct value v = parse_cond(p, false);
 		p->rel_ok = rel;
 		parse_expect(p, TOK_RPAREN);
@@ -467,8 +465,7 @@ static struct value parse_primary(struct parser *p)
 			struct value r;
 			if (c.kind == VAL_FUNCTION) {
 			{
-				bool rel = p->rel_ok;
-				p->rel_ok = true;
+				bool rel = parse_set_rel(p, true);
 				r = parse_call_function(p, c.fn, at);
 				p->rel_ok = rel;
 			}

@@ -97,6 +97,15 @@ _Noreturn void parse_error(struct parser *p, const char *fmt, ...) __attribute__
 _Noreturn void parse_expected(struct parser *p, const char *what);
 void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
+/* Set whether comparisons bind (struct parser's rel_ok); returns the old
+ * setting, for the caller to put back. */
+static inline bool parse_set_rel(struct parser *p, bool on)
+{
+	bool old = p->rel_ok;
+	p->rel_ok = on;
+	return old;
+}
+
 /* The token stream (directives already run). parse_peek returns the
  * current token, fetching it if needed; parse_advance consumes it. */
 const struct token *parse_peek(struct parser *p);

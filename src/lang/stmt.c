@@ -3,7 +3,6 @@
  * function names its production above it. */
 #include "lang/parser.h"
 
-#include "geom/shapes.h"
 #include "scene/fn.h"
 #include "scene/camera.h"
 #include "scene/light.h"
@@ -406,8 +405,7 @@ static bool item_value(struct parser *p, struct value *out);
  * parenthesis opens (see struct parser's rel_ok). */
 bool parse_item_value(struct parser *p, struct value *out)
 {
-	bool rel = p->rel_ok;
-	p->rel_ok = false;
+	bool rel = parse_set_rel(p, false);
 	bool r = item_value(p, out);
 	p->rel_ok = rel;
 	return r;

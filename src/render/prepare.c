@@ -2,7 +2,6 @@
 #include "render/prepare.h"
 
 #include "geom/csg.h"
-#include "geom/mesh.h"
 
 #include <stdlib.h>
 
@@ -47,10 +46,12 @@ static unsigned object_features(struct object *o, bool *caster)
 	if (!(o->flags & OBJ_NO_SHADOW))
 		*caster = true;
 	f |= finish_features(o->tex);
-	struct texture *const *own;
-	size_t n = mesh_texture_list(o, &own); /* a mesh's triangles' textures */
-	for (size_t i = 0; i < n; i++)
-		f |= finish_features(own[i]);
+	if (o->ops->textures) {
+		struct texture *const *own;
+		size_t n = o->ops->textures(o, &own);
+		for (size_t i = 0; i < n; i++)
+			f |= finish_features(own[i]);
+	}
 	return f;
 }
 

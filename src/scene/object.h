@@ -53,6 +53,10 @@ struct object_ops {
 	/* The texture at hit h when the primitive has several (mesh triangles);
 	 * NULL: the object's own. Returns NULL to mean the object's own. */
 	struct texture *(*texture_at)(const struct object *o, const struct hit *h);
+	/* The textures the primitive carries besides the object's own (a
+	 * mesh's triangle textures), for prepare's feature analysis; may be
+	 * NULL (none). */
+	size_t (*textures)(const struct object *o, struct texture *const **tex);
 	/* CSG only (NULL elsewhere): the children, for operations that walk
 	 * the tree (transforms, textures, flags, prepare). */
 	size_t (*children)(struct object *o, struct object ***kids);

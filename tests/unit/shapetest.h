@@ -36,7 +36,7 @@ static inline bool hits(const struct object *o, vec3 org, vec3 dir, double tmin,
 static inline vec3 hit_normal(const struct object *o, vec3 org, vec3 dir, const struct hit *h)
 {
 	vec3 n = object_normal(o, v3_madd(org, dir, h->t), h);
-	assert_near(v3_len(n), 1, 1e-14);
+	assert_near(v3_len(n), 1, 1e-15);
 	return n;
 }
 
