@@ -235,7 +235,7 @@ void parse_write(struct parser *p);
  * parse_free_texture_holder frees a heap `struct texture *` holder and its
  * reference (for parse_own). */
 void parse_texture(struct parser *p, struct texture **tex);
-void parse_pigment(struct parser *p, struct pigment *pig);
+void parse_pigment(struct parser *p, struct pigment **pig);
 void parse_finish(struct parser *p, struct finish *f);
 struct texture *parse_private_texture(struct parser *p, struct texture **tex);
 void parse_free_texture_holder(void *holder);

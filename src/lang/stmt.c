@@ -19,19 +19,22 @@ void parse_free_texture_holder(void *h)
 /* ---- textures ---- */
 
 /* pigment := pigment '{' [IDENT] [color] '}' */
-void parse_pigment(struct parser *p, struct pigment *pig)
+void parse_pigment(struct parser *p, struct pigment **pig)
 {
 	parse_advance(p); /* pigment */
 	parse_expect(p, TOK_LBRACE);
 	const struct value *v = parse_ident_value(p);
 	if (v && v->kind == VAL_PIGMENT) {
-		*pig = *v->pig;
+		pigment_unref(*pig);
+		*pig = pigment_ref(v->pig);
 		parse_advance(p);
 	}
 	while (!parse_is(p, TOK_RBRACE)) {
 		if (parse_starts_expression(p)) {
-			pig->kind = PIGMENT_SOLID;
-			pig->color = parse_color(p);
+			struct rgbft c = parse_color(p);
+			pigment_unref(*pig);
+			*pig = pigment_new();
+			(*pig)->color = c;
 			continue;
 		}
 		struct xform t;
@@ -85,7 +88,7 @@ void parse_finish(struct parser *p, struct finish *f)
 			f->roughness = r;
 			break;
 		}
-		case KW_REFLECTION: parse_advance(p); f->reflection = parse_rgb_or_float(p); break;
+		case KW_REFLECTION: parse_advance(p); f->reflection_min = f->reflection_max = parse_rgb_or_float(p); break;
 		case KW_METALLIC:
 			parse_advance(p);
 			f->metallic = true;
@@ -399,6 +402,12 @@ static struct array *parse_array(struct parser *p)
 
 static void free_pigment_cb(void *x) { free(x); }
 
+static void free_pigment_holder(void *h)
+{
+	pigment_unref(*(struct pigment **)h);
+	free(h);
+}
+
 static bool item_value(struct parser *p, struct value *out);
 
 /* Inside a scene item's braces comparisons do not bind again until a new
@@ -443,13 +452,15 @@ static bool item_value(struct parser *p, struct value *out)
 		out->fn = parse_function(p);
 		return true;
 	case KW_PIGMENT: {
-		struct pigment *pig = calloc(1, sizeof *pig);
+		struct pigment **pig = calloc(1, sizeof *pig);
 		if (!pig) abort();
-		int slot = parse_own(p, pig, free_pigment_cb);
+		*pig = pigment_new();
+		int slot = parse_own(p, pig, free_pigment_holder);
 		parse_pigment(p, pig);
 		parse_release(p, slot);
 		out->kind = VAL_PIGMENT;
-		out->pig = pig;
+		out->pig = *pig;
+		free(pig);
 		return true;
 	}
 	case KW_FINISH: {

@@ -39,7 +39,7 @@ void val_clear(struct value *v)
 	switch (v->kind) {
 	case VAL_OBJECT: object_free(v->obj); break;
 	case VAL_TEXTURE: texture_unref(v->tex); break;
-	case VAL_PIGMENT: free(v->pig); break;
+	case VAL_PIGMENT: pigment_unref(v->pig); break;
 	case VAL_FINISH: free(v->fin); break;
 	case VAL_CAMERA: free(v->cam); break;
 	case VAL_LIGHT: free(v->light); break;
@@ -79,7 +79,7 @@ struct value val_copy(const struct value *src)
 	switch (src->kind) {
 	case VAL_OBJECT: v.obj = object_copy(src->obj); break;
 	case VAL_TEXTURE: v.tex = texture_ref(src->tex); break;
-	case VAL_PIGMENT: v.pig = dup_bytes(src->pig, sizeof *src->pig); break;
+	case VAL_PIGMENT: v.pig = pigment_ref(src->pig); break;
 	case VAL_FINISH: v.fin = dup_bytes(src->fin, sizeof *src->fin); break;
 	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
 	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;

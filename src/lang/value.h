@@ -105,7 +105,7 @@ struct value {
 		const char *str;
 		struct object *obj;    /* owned */
 		struct texture *tex;   /* one reference */
-		struct pigment *pig;   /* owned */
+		struct pigment *pig;   /* one reference */
 		struct finish *fin;    /* owned */
 		struct camera *cam;    /* owned */
 		struct light *light;   /* owned */

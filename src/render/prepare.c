@@ -27,7 +27,7 @@ static unsigned finish_features(const struct texture *t)
 		f |= FEAT_PHONG;
 	if (fin->specular > 0)
 		f |= FEAT_SPECULAR;
-	if (rgb_max(fin->reflection) > 0)
+	if (rgb_max(fin->reflection_max) > 0)
 		f |= FEAT_REFLECTION;
 	return f;
 }

@@ -126,7 +126,8 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 	if (!tex)
 		tex = h.obj->tex;
 	const struct finish *fin = &tex->finish;
-	rgb pig = rgb_of(tex->pigment.color);
+	struct pattern_ctx pctx = {.p = pt, .normal = n, .dir = dir, .noise_generator = 2};
+	rgb pig = rgb_of(pigment_eval(tex->pigment, &pctx));
 	rgb col = rgb_mul(rgb_mul(fin->ambient, s->gs.ambient_light), pig);
 	col = rgb_add(col, rgb_mul(fin->emission, pig));
 
@@ -179,11 +180,11 @@ rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind k
 		}
 	}
 
-	if ((feat & FEAT_REFLECTION) && rgb_max(fin->reflection) > 0 && depth < p->max_depth) {
+	if ((feat & FEAT_REFLECTION) && rgb_max(fin->reflection_max) > 0 && depth < p->max_depth) {
 		struct ray rr = {v3_madd(pt, n, eps), refl};
 		bool any;
 		rgb rc = trace_ray(tr, &rr, depth + 1, RAY_REFLECTED, &any);
-		col = rgb_add(col, rgb_mul(rc, fin->reflection));
+		col = rgb_add(col, rgb_mul(rc, fin->reflection_max));
 	}
 	return col;
 }

@@ -15,6 +15,7 @@ void object_init(struct object *o, const struct object_ops *ops, struct srcpos p
 	o->xf = xform_identity();
 	o->has_xf = false;
 	o->tex = NULL;
+	o->interior = NULL;
 	o->flags = 0;
 	o->bounds = aabb_empty();
 	o->clip = NULL;
@@ -84,6 +85,7 @@ struct object *object_copy(const struct object *o)
 {
 	struct object *c = o->ops->copy(o);
 	texture_ref(c->tex);
+	interior_ref(c->interior);
 	c->clip = o->clip ? object_copy(o->clip) : NULL;
 	if (o->bound == o->clip)
 		c->bound = c->clip;
@@ -96,6 +98,7 @@ void object_free(struct object *o)
 {
 	if (!o) return;
 	texture_unref(o->tex);
+	interior_unref(o->interior);
 	if (o->bound != o->clip)
 		object_free(o->bound);
 	object_free(o->clip);

@@ -74,6 +74,7 @@ struct object {
 	struct xform xf;          /* world_from_object (fwd) and its inverse */
 	bool has_xf;              /* false: xf is the identity, skip it */
 	struct texture *tex;      /* one reference; NULL until the parser sets it */
+	struct interior *interior; /* one reference; NULL: the default (ior 1, no fading) */
 	unsigned flags;           /* enum object_flag */
 	struct aabb bounds;       /* world-space bounds, set by prepare */
 	struct object *clip;      /* clipped_by: hits count only inside it; owned */
