@@ -220,7 +220,7 @@ struct value spline_eval_as(const struct spline *s, double t, int kind, struct s
 void parse_debug_write(struct parser *p, const char *text);
 void parse_debug_flush(struct parser *p);
 
-/* #default { ... } (stmt.c). */
+/* #default { ... } (texture_parse.c). */
 void parse_default(struct parser *p);
 
 /* File directives (fileio.c); the current token follows the keyword. */
@@ -229,7 +229,8 @@ void parse_fclose(struct parser *p);
 void parse_read(struct parser *p, struct srcpos at);
 void parse_write(struct parser *p);
 
-/* Textures (stmt.c): read into what they are given. parse_texture
+/* Textures (texture_parse.c; finishes and interiors in finish_parse.c):
+ * read into what they are given. parse_texture
  * replaces *tex; parse_private_texture makes *tex one this holder may
  * change alone (created from the #default texture if NULL) and returns it.
  * parse_free_texture_holder frees a heap `struct texture *` holder and its

@@ -21,6 +21,11 @@ const char *val_kind_name(enum val_kind k)
 	case VAL_TEXTURE: return "texture";
 	case VAL_PIGMENT: return "pigment";
 	case VAL_FINISH: return "finish";
+	case VAL_NORMAL: return "normal";
+	case VAL_INTERIOR: return "interior";
+	case VAL_MATERIAL: return "material";
+	case VAL_MAP:
+		return "map";
 	case VAL_CAMERA: return "camera";
 	case VAL_LIGHT: return "light_source";
 	case VAL_TRANSFORM: return "transform";
@@ -41,6 +46,14 @@ void val_clear(struct value *v)
 	case VAL_TEXTURE: texture_unref(v->tex); break;
 	case VAL_PIGMENT: pigment_unref(v->pig); break;
 	case VAL_FINISH: free(v->fin); break;
+	case VAL_NORMAL: normal_unref(v->nrm); break;
+	case VAL_INTERIOR: interior_unref(v->interior); break;
+	case VAL_MATERIAL:
+		texture_unref(v->mat->tex);
+		interior_unref(v->mat->interior);
+		free(v->mat);
+		break;
+	case VAL_MAP: blend_map_unref(v->map); break;
 	case VAL_CAMERA: free(v->cam); break;
 	case VAL_LIGHT: free(v->light); break;
 	case VAL_TRANSFORM: free(v->xf); break;
@@ -81,6 +94,14 @@ struct value val_copy(const struct value *src)
 	case VAL_TEXTURE: v.tex = texture_ref(src->tex); break;
 	case VAL_PIGMENT: v.pig = pigment_ref(src->pig); break;
 	case VAL_FINISH: v.fin = dup_bytes(src->fin, sizeof *src->fin); break;
+	case VAL_NORMAL: v.nrm = normal_ref(src->nrm); break;
+	case VAL_INTERIOR: v.interior = interior_ref(src->interior); break;
+	case VAL_MATERIAL:
+		v.mat = dup_bytes(src->mat, sizeof *src->mat);
+		texture_ref(v.mat->tex);
+		interior_ref(v.mat->interior);
+		break;
+	case VAL_MAP: v.map = blend_map_ref(src->map); break;
 	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
 	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;
 	case VAL_TRANSFORM: v.xf = dup_bytes(src->xf, sizeof *src->xf); break;

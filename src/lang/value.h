@@ -21,6 +21,10 @@ enum val_kind {
 	VAL_TEXTURE,
 	VAL_PIGMENT,
 	VAL_FINISH,
+	VAL_NORMAL,
+	VAL_INTERIOR,
+	VAL_MATERIAL, /* a texture and an interior */
+	VAL_MAP,      /* color_map, pigment_map, normal_map, slope_map, texture_map (map->kind tells) */
 	VAL_CAMERA,
 	VAL_LIGHT,
 	VAL_TRANSFORM,
@@ -34,6 +38,12 @@ enum val_kind {
 
 struct light;
 struct camera;
+
+/* material { texture interior }: what a material identifier holds. */
+struct material {
+	struct texture *tex;         /* one reference, or NULL */
+	struct interior *interior;   /* one reference, or NULL */
+};
 struct symtab;
 
 /* A macro: its parameters and where its body lies in a file's tokens. */
@@ -107,6 +117,10 @@ struct value {
 		struct texture *tex;   /* one reference */
 		struct pigment *pig;   /* one reference */
 		struct finish *fin;    /* owned */
+		struct normal *nrm;    /* one reference */
+		struct interior *interior; /* one reference */
+		struct material *mat;  /* owned */
+		struct blend_map *map; /* one reference */
 		struct camera *cam;    /* owned */
 		struct light *light;   /* owned */
 		struct xform *xf;      /* owned */
