@@ -61,3 +61,49 @@ void parse_finish(struct parser *p, struct finish *f)
 	}
 }
 
+
+/* interior := interior '{' [IDENT] { interior_item } '}'
+ * interior_item := ior F | caustics F | dispersion F | dispersion_samples F
+ *                | fade_distance F | fade_power F | fade_color COLOR
+ * Replaces *in with the new interior (one reference). */
+void parse_interior(struct parser *p, struct interior **in)
+{
+	parse_advance(p); /* interior */
+	parse_expect(p, TOK_LBRACE);
+	struct interior *n;
+	const struct value *v = parse_ident_value(p);
+	if (v) {
+		if (v->kind != VAL_INTERIOR)
+			parse_wrong_kind(p, v, "an interior");
+		n = interior_copy(v->interior);
+		parse_advance(p);
+	} else {
+		n = interior_new();
+	}
+	interior_unref(*in);
+	*in = n;
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "an interior item or '}'");
+		switch (t->kw) {
+		case KW_IOR: parse_advance(p); n->ior = parse_float(p); break;
+		case KW_CAUSTICS: parse_advance(p); n->caustics = parse_float(p); break;
+		case KW_DISPERSION: parse_advance(p); n->dispersion = parse_float(p); break;
+		case KW_DISPERSION_SAMPLES: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double d = parse_float(p);
+			if (d < 2)
+				parse_error_at(p, at, "dispersion_samples must be at least 2");
+			n->dispersion_samples = (int)d;
+			break;
+		}
+		case KW_FADE_DISTANCE: parse_advance(p); n->fade_distance = parse_float(p); break;
+		case KW_FADE_POWER: parse_advance(p); n->fade_power = parse_float(p); break;
+		case KW_FADE_COLOR: case KW_FADE_COLOUR: parse_advance(p); n->fade_color = rgb_of(parse_color(p)); break;
+		default:
+			parse_expected(p, "an interior item or '}'");
+		}
+	}
+}

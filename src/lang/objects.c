@@ -697,6 +697,7 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	case KW_TEXTURE: parse_texture(p, &o->tex); return true;
 	case KW_PIGMENT: parse_pigment(p, &parse_private_texture(p, &o->tex)->pigment); return true;
 	case KW_FINISH: parse_finish(p, &parse_private_texture(p, &o->tex)->finish); return true;
+	case KW_INTERIOR: parse_interior(p, &o->interior); return true;
 	case KW_NO_SHADOW: parse_advance(p); s->flags |= OBJ_NO_SHADOW; return true;
 	case KW_NO_IMAGE: parse_advance(p); s->flags |= OBJ_NO_IMAGE; return true;
 	case KW_NO_REFLECTION: parse_advance(p); s->flags |= OBJ_NO_REFLECTION; return true;

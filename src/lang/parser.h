@@ -238,6 +238,12 @@ void parse_write(struct parser *p);
 void parse_texture(struct parser *p, struct texture **tex);
 void parse_pigment(struct parser *p, struct pigment **pig);
 void parse_finish(struct parser *p, struct finish *f);
+void parse_interior(struct parser *p, struct interior **in);
+/* The inside of an image_map, bump_map, image_pattern or material_map
+ * block after its '{' up to the image's modifiers (image_parse.c): the
+ * file type and name and the mapping modifiers, into m. Stops at the
+ * first token it does not know (the caller's own items, or '}'). */
+void parse_image_mapping(struct parser *p, struct image_mapping *m);
 struct texture *parse_private_texture(struct parser *p, struct texture **tex);
 void parse_free_texture_holder(void *holder);
 
