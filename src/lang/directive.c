@@ -642,6 +642,34 @@ static void dir_declare(struct parser *p, bool local)
 		parse_error_at(p, id.pos, "'%s' is a reserved word and cannot be declared", kw_names[id.kw]);
 	if (id.kind != TOK_IDENT)
 		raw_expected(p, &id, "an identifier to declare");
+	/* The common case, IDENT '=' float-expression ';', from the
+	 * expression's compiled form when it has one (exprcache.h). */
+	struct frame *f = top(p);
+	if (!deprecated && !p->have_cur && f->pos + 1 < f->end && f->toks[f->pos].kind == TOK_EQ) {
+		f->pos++;
+		double x;
+		const struct token *start;
+		struct exprcache_ticket tk;
+		if (exprcache_try_float(p, &x, &start, &tk)) {
+			/* Written in place, as exprcache_try does. */
+			struct value *slot = parse_assign_slot(p, id.str, local);
+			val_clear(slot);
+			memset(slot, 0, sizeof *slot);
+			slot->kind = VAL_FLOAT;
+			slot->n = 1;
+			slot->pos = id.pos;
+			slot->v[0] = x;
+			f = top(p);
+			if (f->pos < f->end && f->toks[f->pos].kind == TOK_SEMI) {
+				f->pos++;
+				p->prev = f->toks[f->pos - 1];
+			} else {
+				end_declaration(p, true, id.str);
+			}
+			return;
+		}
+		f->pos--; /* the ordinary way reads the '=' again */
+	}
 	if (parse_is(p, TOK_LBRACKET)) {
 		declare_element(p, id.str, local, id.pos);
 		return;
@@ -789,6 +817,7 @@ static void dir_version(struct parser *p)
 void parse_directive(struct parser *p, size_t hash)
 {
 	struct srcpos at = top(p)->toks[hash].pos;
+	p->events++;
 	struct token kwt = parse_raw(p);
 	if (kwt.kind != TOK_KEYWORD) {
 		char buf[128];

@@ -562,7 +562,13 @@ static struct value parse_unary(struct parser *p)
 
 struct value parse_expression(struct parser *p)
 {
-	return parse_cond(p, false);
+	struct value v;
+	struct exprcache_ticket tk;
+	if (exprcache_try(p, &v, &tk))
+		return v;
+	v = parse_cond(p, false);
+	exprcache_record(p, &tk, &v);
+	return v;
 }
 
 bool parse_starts_expression(struct parser *p)

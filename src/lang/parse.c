@@ -130,6 +130,7 @@ static void pop_frame(struct parser *p)
 {
 	struct frame *f = &p->frames[p->nframes - 1];
 	check_frame_conds(p, p->nframes - 1);
+	p->events++;
 	sym_free(f->locals);
 	f->locals = NULL;
 	p->nframes--;
@@ -140,6 +141,7 @@ static struct frame *push_frame(struct parser *p, struct srcpos from)
 	if (p->nframes == MAX_FRAMES)
 		parse_error_at(p, from, "includes and macro calls nested too deeply (more than %d levels)", MAX_FRAMES);
 	struct frame *f = &p->frames[p->nframes++];
+	p->events++;
 	memset(f, 0, sizeof *f);
 	f->from = from;
 	f->nconds = p->nconds;
@@ -484,6 +486,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	p->names = sm->names;
 	p->boundary = &jb;
 	p->globals = sym_new();
+	p->xcache = exprcache_new();
 	p->version = 3.7;
 	d->context = print_context;
 	d->context_arg = p;
@@ -516,6 +519,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 		sym_free(p->frames[i].locals);
 	sym_free(p->globals);
 	free(p->rng);
+	exprcache_free(p->xcache);
 	texture_unref(p->default_tex);
 	d->context = NULL;
 	d->context_arg = NULL;

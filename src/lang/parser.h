@@ -4,6 +4,7 @@
 #ifndef LUCENT_PARSER_H
 #define LUCENT_PARSER_H
 
+#include "lang/exprcache.h"
 #include "lang/lex.h"
 #include "lang/parse.h"
 #include "lang/sym.h"
@@ -87,6 +88,8 @@ struct parser {
 	struct owned owned[MAX_OWNED];
 	int nowned;
 	struct texture *default_tex; /* #default { texture }: one reference */
+	struct exprcache *xcache;    /* compiled float expressions (exprcache.h) */
+	unsigned long events;        /* directives run and frames entered or left */
 };
 
 /* Errors: report at pos (or at the current token) and unwind. */

@@ -31,7 +31,7 @@ struct symtab *sym_new(void)
 {
 	struct symtab *t = calloc(1, sizeof *t);
 	if (!t) abort();
-	t->cap = 64;
+	t->cap = 8; /* most tables are a macro call's few parameters */
 	t->e = calloc(t->cap, sizeof *t->e);
 	if (!t->e) abort();
 	return t;
