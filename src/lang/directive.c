@@ -460,6 +460,7 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	if (lp.kind != TOK_LPAREN)
 		raw_expected(p, &lp, "'(' after the macro name");
 	struct symtab *locals = sym_new();
+	sym_track(locals, &p->bindgen);
 	int slot = parse_own(p, locals, (void (*)(void *))sym_free);
 	int n = 0;
 	struct frame *f = top(p);
@@ -527,6 +528,8 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			parse_error_at(p, name->pos, "macro calls nested too deeply (more than %d levels): is %s recursing without end?", MAX_FRAMES, m->name);
 		}
 		mf = &p->frames[p->nframes++];
+		p->events++;
+		p->bindgen++;
 		memset(mf, 0, sizeof *mf);
 	}
 	mf->kind = FRAME_MACRO;

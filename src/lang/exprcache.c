@@ -43,6 +43,8 @@ struct xinstr {
 	double k;
 	const char *name;
 	const struct math_fn *fn;
+	const struct value *bound;   /* X_VAR: the binding found when bindgen was `gen` */
+	unsigned long gen;
 };
 
 enum xstate { XS_COMPILED, XS_NO };
@@ -389,16 +391,27 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 static bool truthy(double x) { return fabs(x) > EQ_EPSILON; }
 
 /* Run e; false (and nothing changed) where the ordinary parser must. */
-static bool run(struct parser *p, const struct xentry *e, double *out)
+static bool run(struct parser *p, struct xentry *e, double *out)
 {
 	double st[XSTACK];
 	int sp = 0;
 	for (int pc = 0; pc < e->ncode; pc++) {
-		const struct xinstr *in = &e->code[pc];
+		struct xinstr *in = &e->code[pc];
 		switch ((enum xop)in->op) {
 		case X_NUM: st[sp++] = in->k; break;
 		case X_VAR: {
-			const struct value *v = parse_lookup(p, in->name);
+			/* The binding found last time stands while no binding has
+			 * been added or removed and no frame entered or left. A
+			 * by-reference parameter is followed every time (the array
+			 * element it names can move). */
+			const struct value *v = in->bound;
+			if (!v || in->gen != p->bindgen) {
+				v = parse_binding(p, in->name);
+				in->bound = v && v->kind != VAL_ALIAS ? v : NULL;
+				in->gen = p->bindgen;
+				if (v && v->kind == VAL_ALIAS)
+					v = parse_lookup(p, in->name);
+			}
 			if (!v || v->kind != VAL_FLOAT || v->deprecated)
 				return false;
 			st[sp++] = v->v[0];

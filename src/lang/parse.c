@@ -131,6 +131,7 @@ static void pop_frame(struct parser *p)
 	struct frame *f = &p->frames[p->nframes - 1];
 	check_frame_conds(p, p->nframes - 1);
 	p->events++;
+	p->bindgen++;
 	sym_free(f->locals);
 	f->locals = NULL;
 	p->nframes--;
@@ -142,6 +143,7 @@ static struct frame *push_frame(struct parser *p, struct srcpos from)
 		parse_error_at(p, from, "includes and macro calls nested too deeply (more than %d levels)", MAX_FRAMES);
 	struct frame *f = &p->frames[p->nframes++];
 	p->events++;
+	p->bindgen++;
 	memset(f, 0, sizeof *f);
 	f->from = from;
 	f->nconds = p->nconds;
@@ -159,6 +161,8 @@ void parse_push_file(struct parser *p, uint32_t file, struct srcpos from)
 	f->kind = FRAME_FILE;
 	f->file = file;
 	f->locals = p->nframes > 1 ? sym_new() : NULL;
+	if (f->locals)
+		sym_track(f->locals, &p->bindgen);
 	/* Lex with the frame in place, so a lexical error shows the include
 	 * chain that led to this file. */
 	if (!lex_file(p->sm, file, p->d))
@@ -333,6 +337,12 @@ static struct value *follow_alias(struct value *v, bool write)
 	return v;
 }
 
+struct value *parse_binding(struct parser *p, const char *name)
+{
+	struct symtab *t;
+	return find_binding(p, name, &t);
+}
+
 struct value *parse_lookup(struct parser *p, const char *name)
 {
 	struct symtab *t;
@@ -486,6 +496,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	p->names = sm->names;
 	p->boundary = &jb;
 	p->globals = sym_new();
+	sym_track(p->globals, &p->bindgen);
 	p->xcache = exprcache_new();
 	p->version = 3.7;
 	d->context = print_context;

@@ -90,6 +90,9 @@ struct parser {
 	struct texture *default_tex; /* #default { texture }: one reference */
 	struct exprcache *xcache;    /* compiled float expressions (exprcache.h) */
 	unsigned long events;        /* directives run and frames entered or left */
+	unsigned long bindgen;       /* bumped when any binding is added or removed or a
+	                              * frame is entered or left: pointers to bindings
+	                              * taken at one value stay valid while it holds */
 };
 
 /* Errors: report at pos (or at the current token) and unwind. */
@@ -137,6 +140,9 @@ const struct value *parse_ident_value(struct parser *p);
 _Noreturn void parse_wrong_kind(struct parser *p, const struct value *v, const char *want);
 /* Symbols: the innermost binding of name (aliases followed), or NULL. */
 struct value *parse_lookup(struct parser *p, const char *name);
+/* The innermost binding of name itself (a by-reference parameter is not
+ * followed; the value may be VAL_NONE), or NULL. */
+struct value *parse_binding(struct parser *p, const char *name);
 /* The value slot #declare NAME (local: #local NAME) assigns: the
  * innermost existing binding, through by-reference parameters, else a new
  * one (global for #declare, at the current level for #local). */

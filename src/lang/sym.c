@@ -13,6 +13,7 @@ struct entry {
 struct symtab {
 	struct entry *e;
 	size_t cap, used; /* used counts live entries and tombstones */
+	unsigned long *gen; /* bumped when a binding is added or removed (sym_track) */
 };
 
 static const char tombstone[1];
@@ -35,6 +36,11 @@ struct symtab *sym_new(void)
 	t->e = calloc(t->cap, sizeof *t->e);
 	if (!t->e) abort();
 	return t;
+}
+
+void sym_track(struct symtab *t, unsigned long *gen)
+{
+	t->gen = gen;
 }
 
 void sym_free(struct symtab *t)
@@ -91,6 +97,8 @@ void sym_set(struct symtab *t, const char *name, struct value v)
 		e->val = v;
 		return;
 	}
+	if (t->gen)
+		++*t->gen;
 	if ((t->used + 1) * 4 >= t->cap * 3)
 		rehash(t, t->cap * 2);
 	size_t i = hash_ptr(name) & (t->cap - 1);
@@ -109,6 +117,8 @@ bool sym_remove(struct symtab *t, const char *name)
 		return false;
 	val_clear(&e->val);
 	e->name = TOMBSTONE;
+	if (t->gen)
+		++*t->gen;
 	return true;
 }
 

@@ -12,6 +12,9 @@ struct symtab;
 
 struct symtab *sym_new(void);
 void sym_free(struct symtab *t);
+/* Bump *gen whenever a binding is added to or removed from t, so that
+ * whoever holds pointers to its values knows when they may have moved. */
+void sym_track(struct symtab *t, unsigned long *gen);
 /* The value bound to name in t, or NULL. */
 struct value *sym_get(const struct symtab *t, const char *name);
 /* Bind name to v in t, taking ownership of v (any old value is cleared). */
