@@ -651,9 +651,8 @@ static void dir_declare(struct parser *p, bool local)
 	if (!deprecated && !p->have_cur && f->pos + 1 < f->end && f->toks[f->pos].kind == TOK_EQ) {
 		f->pos++;
 		double x;
-		const struct token *start;
 		struct exprcache_ticket tk;
-		if (exprcache_try_float(p, &x, &start, &tk)) {
+		if (exprcache_try_float(p, &x, &tk)) {
 			/* Written in place, as exprcache_try does. */
 			struct value *slot = parse_assign_slot(p, id.str, local);
 			val_clear(slot);

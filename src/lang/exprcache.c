@@ -35,6 +35,9 @@ enum xop {
 	X_F1, X_F2, /* built-in math function of 1 or 2 arguments */
 	X_MIN, X_MAX, /* pop i values, push the least / greatest */
 	X_RAND,     /* pop a stream number, push its next value */
+	X_VEC,      /* pop i floats, push the vector <...> of them */
+	X_CONST,    /* push the vector constant kv (x, y, z, t, u, v) */
+	X_COLOR,    /* make the top a colour as the keyword i (rgb, rgbf, ...) does */
 };
 
 struct xinstr {
@@ -43,6 +46,8 @@ struct xinstr {
 	double k;
 	const char *name;
 	const struct math_fn *fn;
+	double kv[5];                /* X_CONST */
+	int kn;
 	const struct value *bound;   /* X_VAR: the binding found when bindgen was `gen` */
 	unsigned long gen;
 };
@@ -206,10 +211,12 @@ static bool accept(struct compiler *c, enum tok_kind k)
 	return true;
 }
 
-static void cond(struct compiler *c, bool rel);
+static void cond(struct compiler *c, bool rel, bool inv);
+static void binary(struct compiler *c, int min_prec, bool rel, bool inv);
 
-/* The binary operators of expr.c's binop, with the same strengths. */
-static int binop(enum tok_kind k, bool rel, enum xop *op)
+/* The binary operators of expr.c's binop, with the same strengths; inside
+ * a vector literal (inv) a '>' closes it. */
+static int binop(enum tok_kind k, bool rel, bool inv, enum xop *op)
 {
 	switch (k) {
 	case TOK_PLUS: *op = X_ADD; return 4;
@@ -227,7 +234,7 @@ static int binop(enum tok_kind k, bool rel, enum xop *op)
 	case TOK_LE: *op = X_LE; return 3;
 	case TOK_EQ: *op = X_EQ; return 3;
 	case TOK_GE: *op = X_GE; return 3;
-	case TOK_GT: *op = X_GT; return 3;
+	case TOK_GT: *op = X_GT; return inv ? 0 : 3;
 	case TOK_NE: *op = X_NE; return 3;
 	default: return 0;
 	}
@@ -242,12 +249,25 @@ static int args(struct compiler *c, int n)
 	}
 	int got = 0;
 	do {
-		cond(c, true);
+		cond(c, true, false);
 		got++;
 	} while (c->ok && accept(c, TOK_COMMA));
 	if (!accept(c, TOK_RPAREN) || (n >= 0 && got != n) || (n < 0 && got < 2))
 		c->ok = false;
 	return got;
+}
+
+static void emit_const(struct compiler *c, int n, double a, double b, double d, double e)
+{
+	emit(c, X_CONST, 0, 0, 1);
+	if (!c->ok)
+		return;
+	struct xinstr *in = &c->code[c->ncode - 1];
+	in->kn = n;
+	in->kv[0] = a;
+	in->kv[1] = b;
+	in->kv[2] = d;
+	in->kv[3] = e;
 }
 
 static void primary(struct compiler *c, bool rel)
@@ -260,10 +280,24 @@ static void primary(struct compiler *c, bool rel)
 		return;
 	case TOK_LPAREN:
 		c->at++;
-		cond(c, true);
+		cond(c, true, false);
 		if (!accept(c, TOK_RPAREN))
 			c->ok = false;
 		return;
+	case TOK_LT: {
+		/* '<' cond { ',' cond } '>': components read in the context's
+		 * rel, with '>' closing (expr.c's parse_vector_literal). */
+		c->at++;
+		int n = 0;
+		do {
+			cond(c, rel, true);
+			n++;
+		} while (c->ok && accept(c, TOK_COMMA));
+		if (!accept(c, TOK_GT) || n < 2 || n > 5)
+			c->ok = false;
+		emit(c, X_VEC, n, 0, 1 - n);
+		return;
+	}
 	case TOK_IDENT: {
 		c->at++;
 		enum tok_kind next = (enum tok_kind)peek(c)->kind;
@@ -289,6 +323,24 @@ static void primary(struct compiler *c, bool rel)
 		return;
 	}
 	switch (k) {
+	case KW_X: emit_const(c, 3, 1, 0, 0, 0); return;
+	case KW_Y: emit_const(c, 3, 0, 1, 0, 0); return;
+	case KW_Z: emit_const(c, 3, 0, 0, 1, 0); return;
+	case KW_T: emit_const(c, 4, 0, 0, 0, 1); return;
+	case KW_U: emit_const(c, 2, 1, 0, 0, 0); return;
+	case KW_V: emit_const(c, 2, 0, 1, 0, 0); return;
+	case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT:
+	case KW_SRGB: case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT: {
+		/* expr.c's parse_color_keyword: a binary of strength 4, then
+		 * optional component keywords, which need the full parser. */
+		binary(c, 4, false, false);
+		emit(c, X_COLOR, (int32_t)k, 0, 0);
+		const struct token *nt = peek(c);
+		if (nt->kind == TOK_KEYWORD && (nt->kw == KW_RED || nt->kw == KW_GREEN || nt->kw == KW_BLUE ||
+		                                nt->kw == KW_FILTER || nt->kw == KW_TRANSMIT))
+			c->ok = false;
+		return;
+	}
 	case KW_PI: emit(c, X_NUM, 0, M_PI, 1); return;
 	case KW_TRUE: case KW_YES: case KW_ON: emit(c, X_NUM, 0, 1, 1); return;
 	case KW_FALSE: case KW_NO: case KW_OFF: emit(c, X_NUM, 0, 0, 1); return;
@@ -321,6 +373,8 @@ static void unary(struct compiler *c, bool rel)
 	if (t->kind == TOK_MINUS || t->kind == TOK_PLUS || t->kind == TOK_BANG) {
 		c->at++;
 		unary(c, rel);
+		if (!c->ok)
+			return;
 		if (t->kind == TOK_MINUS)
 			emit(c, X_NEG, 0, 0, 0);
 		else if (t->kind == TOK_BANG)
@@ -330,29 +384,29 @@ static void unary(struct compiler *c, bool rel)
 	primary(c, rel);
 }
 
-static void binary(struct compiler *c, int min_prec, bool rel)
+static void binary(struct compiler *c, int min_prec, bool rel, bool inv)
 {
 	unary(c, rel);
 	while (c->ok) {
 		enum xop op;
-		int prec = binop((enum tok_kind)peek(c)->kind, rel, &op);
+		int prec = binop((enum tok_kind)peek(c)->kind, rel, inv, &op);
 		if (prec == 0 || prec < min_prec)
 			return;
 		c->at++;
-		binary(c, prec + 1, rel);
+		binary(c, prec + 1, rel, inv);
 		emit(c, op, 0, 0, -1);
 	}
 }
 
-static void cond(struct compiler *c, bool rel)
+static void cond(struct compiler *c, bool rel, bool inv)
 {
-	binary(c, 1, rel);
+	binary(c, 1, rel, inv);
 	if (!c->ok || !rel || peek(c)->kind != TOK_QUESTION)
 		return;
 	c->at++;
 	int jz = c->ncode;
 	emit(c, X_JZ, 0, 0, -1);
-	cond(c, rel);
+	cond(c, rel, inv);
 	if (!accept(c, TOK_COLON)) {
 		c->ok = false;
 		return;
@@ -362,7 +416,7 @@ static void cond(struct compiler *c, bool rel)
 	if (!c->ok)
 		return;
 	c->code[jz].i = c->ncode;
-	cond(c, rel);
+	cond(c, rel, inv);
 	if (c->ok)
 		c->code[jmp].i = c->ncode;
 }
@@ -370,7 +424,7 @@ static void cond(struct compiler *c, bool rel)
 static void compile(struct xentry *e, const struct parser *p, const struct token *t, uint32_t n, bool rel)
 {
 	struct compiler c = {.p = p, .t = t, .n = n, .ok = true};
-	cond(&c, rel);
+	cond(&c, rel, false);
 	e->state = XS_NO;
 	if (!c.ok || c.at != n)
 		return;
@@ -390,15 +444,123 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 #define EQ_EPSILON 1e-10
 static bool truthy(double x) { return fabs(x) > EQ_EPSILON; }
 
-/* Run e; false (and nothing changed) where the ordinary parser must. */
-static bool run(struct parser *p, struct xentry *e, double *out)
+/* A value on the stack: a float, vector (2..5) or colour (5). */
+struct xval {
+	double v[5];
+	int n;
+	enum val_kind kind;
+};
+
+static double compare(enum xop op, double x, double y)
 {
-	double st[XSTACK];
-	int sp = 0;
+	switch (op) {
+	case X_OR: return truthy(x) || truthy(y);
+	case X_AND: return truthy(x) && truthy(y);
+	case X_LT: return x < y;
+	case X_LE: return x <= y + EQ_EPSILON;
+	case X_EQ: return fabs(x - y) <= EQ_EPSILON;
+	case X_GE: return x >= y - EQ_EPSILON;
+	case X_GT: return x > y;
+	default: return fabs(x - y) > EQ_EPSILON; /* X_NE */
+	}
+}
+
+/* a := a op b, with expr.c's widening (a float fills every component,
+ * a vector is padded with zeros); false on division by zero. */
+static bool binary_op(enum xop op, struct xval *a, const struct xval *b)
+{
+	if (a->kind == VAL_FLOAT && b->kind == VAL_FLOAT) {
+		double x = a->v[0], y = b->v[0];
+		switch (op) {
+		case X_ADD: a->v[0] = x + y; return true;
+		case X_SUB: a->v[0] = x - y; return true;
+		case X_MUL: a->v[0] = x * y; return true;
+		case X_DIV:
+			if (y == 0)
+				return false;
+			a->v[0] = x / y;
+			return true;
+		default: a->v[0] = compare(op, x, y); return true;
+		}
+	}
+	int n = a->n > b->n ? a->n : b->n;
+	double bv[5];
+	for (int i = 0; i < n; i++) {
+		if (i >= a->n)
+			a->v[i] = a->kind == VAL_FLOAT ? a->v[0] : 0;
+		bv[i] = i < b->n ? b->v[i] : b->kind == VAL_FLOAT ? b->v[0] : 0;
+	}
+	a->kind = (a->kind == VAL_COLOR || b->kind == VAL_COLOR) ? VAL_COLOR : n > 1 ? VAL_VECTOR : VAL_FLOAT;
+	a->n = n;
+	for (int i = 0; i < n; i++) {
+		switch (op) {
+		case X_ADD: a->v[i] += bv[i]; break;
+		case X_SUB: a->v[i] -= bv[i]; break;
+		case X_MUL: a->v[i] *= bv[i]; break;
+		case X_DIV:
+			if (bv[i] == 0)
+				return false;
+			a->v[i] /= bv[i];
+			break;
+		default: a->v[i] = compare(op, a->v[i], bv[i]); break;
+		}
+	}
+	if (a->kind == VAL_COLOR)
+		a->n = 5;
+	return true;
+}
+
+static double srgb_decode(double v)
+{
+	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+/* expr.c's parse_color_keyword on an evaluated operand. */
+static void make_color(enum kw k, struct xval *x)
+{
+	int want = (k == KW_RGB || k == KW_SRGB) ? 3 : (k == KW_RGBFT || k == KW_SRGBFT) ? 5 : 4;
+	for (int i = x->n; i < want; i++)
+		x->v[i] = x->kind == VAL_FLOAT ? x->v[0] : 0;
+	double c[5] = {x->v[0], x->v[1], x->v[2], 0, 0};
+	if (k == KW_RGBF || k == KW_SRGBF)
+		c[3] = x->v[3];
+	else if (k == KW_RGBT || k == KW_SRGBT)
+		c[4] = x->v[3];
+	else if (k == KW_RGBFT || k == KW_SRGBFT) {
+		c[3] = x->v[3];
+		c[4] = x->v[4];
+	}
+	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
+		for (int i = 0; i < 3; i++)
+			c[i] = srgb_decode(c[i]);
+	memcpy(x->v, c, sizeof c);
+	x->n = 5;
+	x->kind = VAL_COLOR;
+}
+
+enum { XRAND_UNDO = 32 };
+
+/* Run e; false (and nothing changed) where the ordinary parser must. The
+ * rand() streams it advanced are put back when it gives up. */
+static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval *out)
+{
+	struct xval st[XSTACK];
+	struct { long i; uint32_t state; } undo[XRAND_UNDO];
+	int sp = 0, nundo = 0;
+	st[0].kind = VAL_NONE;
 	for (int pc = 0; pc < e->ncode; pc++) {
 		struct xinstr *in = &e->code[pc];
 		switch ((enum xop)in->op) {
-		case X_NUM: st[sp++] = in->k; break;
+		case X_NUM:
+			st[sp].v[0] = in->k;
+			st[sp].n = 1;
+			st[sp++].kind = VAL_FLOAT;
+			break;
+		case X_CONST:
+			memcpy(st[sp].v, in->kv, sizeof in->kv);
+			st[sp].n = in->kn;
+			st[sp++].kind = VAL_VECTOR;
+			break;
 		case X_VAR: {
 			/* The binding found last time stands while no binding has
 			 * been added or removed and no frame entered or left. A
@@ -412,119 +574,120 @@ static bool run(struct parser *p, struct xentry *e, double *out)
 				if (v && v->kind == VAL_ALIAS)
 					v = parse_lookup(p, in->name);
 			}
-			if (!v || v->kind != VAL_FLOAT || v->deprecated)
-				return false;
-			st[sp++] = v->v[0];
+			if (!v || !val_is_numeric(v) || v->deprecated)
+				goto fail;
+			memcpy(st[sp].v, v->v, sizeof v->v);
+			st[sp].n = v->n;
+			st[sp++].kind = v->kind;
 			break;
 		}
-		case X_NEG: st[sp - 1] = -st[sp - 1]; break;
-		case X_NOT: st[sp - 1] = !truthy(st[sp - 1]); break;
-		case X_ADD: sp--; st[sp - 1] += st[sp]; break;
-		case X_SUB: sp--; st[sp - 1] -= st[sp]; break;
-		case X_MUL: sp--; st[sp - 1] *= st[sp]; break;
-		case X_DIV:
-			sp--;
-			if (st[sp] == 0)
-				return false;
-			st[sp - 1] /= st[sp];
+		case X_NEG: case X_NOT: {
+			struct xval *a = &st[sp - 1];
+			for (int i = 0; i < a->n; i++)
+				a->v[i] = in->op == X_NEG ? -a->v[i] : !truthy(a->v[i]);
 			break;
-		case X_LT: sp--; st[sp - 1] = st[sp - 1] < st[sp]; break;
-		case X_LE: sp--; st[sp - 1] = st[sp - 1] <= st[sp] + EQ_EPSILON; break;
-		case X_EQ: sp--; st[sp - 1] = fabs(st[sp - 1] - st[sp]) <= EQ_EPSILON; break;
-		case X_GE: sp--; st[sp - 1] = st[sp - 1] >= st[sp] - EQ_EPSILON; break;
-		case X_GT: sp--; st[sp - 1] = st[sp - 1] > st[sp]; break;
-		case X_NE: sp--; st[sp - 1] = fabs(st[sp - 1] - st[sp]) > EQ_EPSILON; break;
-		case X_AND: sp--; st[sp - 1] = truthy(st[sp - 1]) && truthy(st[sp]); break;
-		case X_OR: sp--; st[sp - 1] = truthy(st[sp - 1]) || truthy(st[sp]); break;
+		}
+		case X_ADD: case X_SUB: case X_MUL: case X_DIV:
+		case X_LT: case X_LE: case X_EQ: case X_GE: case X_GT: case X_NE: case X_AND: case X_OR:
+			sp--;
+			if (!binary_op((enum xop)in->op, &st[sp - 1], &st[sp]))
+				goto fail;
+			break;
 		case X_JZ:
 			sp--;
-			if (!truthy(st[sp]))
+			if (st[sp].kind != VAL_FLOAT)
+				goto fail;
+			if (!truthy(st[sp].v[0]))
 				pc = in->i - 1;
 			break;
 		case X_JMP: pc = in->i - 1; break;
 		case X_F1:
-			st[sp - 1] = in->fn->f1(st[sp - 1]);
-			if (!isfinite(st[sp - 1]))
-				return false;
+			if (st[sp - 1].kind != VAL_FLOAT)
+				goto fail;
+			st[sp - 1].v[0] = in->fn->f1(st[sp - 1].v[0]);
+			if (!isfinite(st[sp - 1].v[0]))
+				goto fail;
 			break;
 		case X_F2:
 			sp--;
-			st[sp - 1] = in->fn->f2(st[sp - 1], st[sp]);
-			if (!isfinite(st[sp - 1]))
-				return false;
+			if (st[sp - 1].kind != VAL_FLOAT || st[sp].kind != VAL_FLOAT)
+				goto fail;
+			st[sp - 1].v[0] = in->fn->f2(st[sp - 1].v[0], st[sp].v[0]);
+			if (!isfinite(st[sp - 1].v[0]))
+				goto fail;
 			break;
 		case X_MIN: case X_MAX: {
 			int n = in->i;
 			sp -= n;
-			double acc = st[sp];
+			if (st[sp].kind != VAL_FLOAT)
+				goto fail;
+			double acc = st[sp].v[0];
 			for (int i = 1; i < n; i++) {
-				double x = st[sp + i];
+				if (st[sp + i].kind != VAL_FLOAT)
+					goto fail;
+				double x = st[sp + i].v[0];
 				acc = in->op == X_MIN ? (x < acc ? x : acc) : (x > acc ? x : acc);
 			}
-			st[sp++] = acc;
+			st[sp++].v[0] = acc;
 			break;
 		}
 		case X_RAND: {
-			/* The only instruction with an effect: it runs last among
-			 * those that can fail only if the program has no later
-			 * failure point, which compile_ok_rand guarantees. */
-			long i = (long)st[sp - 1];
-			if (i < 0 || i >= p->nrng)
-				return false;
+			long i = (long)st[sp - 1].v[0];
+			if (st[sp - 1].kind != VAL_FLOAT || i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
+				goto fail;
+			undo[nundo].i = i;
+			undo[nundo++].state = p->rng[i];
 			p->rng[i] = p->rng[i] * 1812433253u + 12345u;
-			st[sp - 1] = p->rng[i] / 4294967295.0;
+			st[sp - 1].v[0] = p->rng[i] / 4294967295.0;
 			break;
 		}
+		case X_VEC: {
+			int n = in->i;
+			sp -= n;
+			struct xval r = {.n = n, .kind = VAL_VECTOR};
+			for (int i = 0; i < n; i++) {
+				if (st[sp + i].kind != VAL_FLOAT)
+					goto fail;
+				r.v[i] = st[sp + i].v[0];
+			}
+			for (int i = n; i < 5; i++)
+				r.v[i] = 0;
+			st[sp++] = r;
+			break;
+		}
+		case X_COLOR:
+			make_color((enum kw)in->i, &st[sp - 1]);
+			break;
 		}
 	}
+	if (want_float && st[0].kind != VAL_FLOAT)
+		goto fail;
 	*out = st[0];
+	for (int i = out->n; i < 5; i++)
+		out->v[i] = 0;
 	return true;
-}
-
-/* A program with rand() must not give up after a rand() has advanced its
- * stream (the ordinary parser would advance it again): allow rand() only
- * where nothing after it can fail. */
-static bool rand_is_safe(const struct xentry *e)
-{
-	bool seen = false;
-	for (int pc = 0; pc < e->ncode; pc++) {
-		enum xop op = (enum xop)e->code[pc].op;
-		if (op == X_RAND)
-			seen = true;
-		else if (seen && (op == X_VAR || op == X_DIV || op == X_F1 || op == X_F2))
-			return false;
+fail:
+	while (nundo > 0) {
+		nundo--;
+		p->rng[undo[nundo].i] = undo[nundo].state;
 	}
-	return true;
+	return false;
 }
 
-bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk)
-{
-	double x;
-	const struct token *key;
-	if (!exprcache_try_float(p, &x, &key, tk))
-		return false;
-	/* Fill *out in place: building the value on the stack and copying
-	 * it costs more than the whole program (store-forwarding stalls). */
-	memset(out, 0, sizeof *out);
-	out->kind = VAL_FLOAT;
-	out->n = 1;
-	out->pos = key->pos;
-	out->v[0] = x;
-	return true;
-}
-
-bool exprcache_try_float(struct parser *p, double *out, const struct token **start, struct exprcache_ticket *tk)
+/* Where the compiled form may run: the parser at a token whose expression
+ * is compiled for this context. Returns the entry, or NULL. */
+static struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
 {
 	tk->key = NULL;
 	if (!p->xcache)
-		return false;
+		return NULL;
 	long i = next_index(p);
 	if (i < 0)
-		return false;
+		return NULL;
 	struct frame *f = &p->frames[p->nframes - 1];
 	const struct token *key = &f->toks[i];
 	if (key->kind == TOK_HASH)
-		return false;
+		return NULL;
 	struct xentry *e = find(p->xcache, key);
 	if (!e->key) {
 		/* First time here: the caller parses and tells us how it went. */
@@ -534,18 +697,52 @@ bool exprcache_try_float(struct parser *p, double *out, const struct token **sta
 		tk->frame = p->nframes;
 		tk->events = p->events;
 		tk->rel_ok = p->rel_ok;
-		return false;
+		return NULL;
 	}
 	if (e->state != XS_COMPILED || e->rel_ok != p->rel_ok || (size_t)i + e->len > f->end)
-		return false;
+		return NULL;
 	if ((size_t)i + e->len == f->end && !ends_in_caller(p))
-		return false;
-	if (!run(p, e, out))
-		return false;
-	*start = key;
+		return NULL;
+	*index = i;
+	return e;
+}
+
+/* Move the parser past the expression that began at index i. */
+static void skip(struct parser *p, long i, const struct xentry *e)
+{
+	struct frame *f = &p->frames[p->nframes - 1];
 	f->pos = (size_t)i + e->len;
 	p->have_cur = false;
 	p->prev = f->toks[f->pos - 1];
+}
+
+bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk)
+{
+	long i;
+	struct xentry *e = ready(p, tk, &i);
+	struct xval x;
+	if (!e || !run(p, e, false, &x))
+		return false;
+	/* Fill *out in place: building the value on the stack and copying
+	 * it costs more than the whole program (store-forwarding stalls). */
+	memset(out, 0, sizeof *out);
+	out->kind = x.kind;
+	out->n = x.n;
+	out->pos = e->key->pos;
+	memcpy(out->v, x.v, sizeof x.v);
+	skip(p, i, e);
+	return true;
+}
+
+bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket *tk)
+{
+	long i;
+	struct xentry *e = ready(p, tk, &i);
+	struct xval x;
+	if (!e || !run(p, e, true, &x))
+		return false;
+	*out = x.v[0];
+	skip(p, i, e);
 	return true;
 }
 
@@ -555,7 +752,7 @@ void exprcache_record(struct parser *p, const struct exprcache_ticket *tk, const
 		return;
 	struct xentry *e = insert(p->xcache, tk->key);
 	e->state = XS_NO;
-	if (v->kind != VAL_FLOAT)
+	if (!val_is_numeric(v))
 		return;
 	long end;
 	if (p->events == tk->events && p->nframes == tk->frame && p->frames[p->nframes - 1].toks == tk->toks) {
@@ -574,9 +771,4 @@ void exprcache_record(struct parser *p, const struct exprcache_ticket *tk, const
 	if (start < 0 || (size_t)start >= tk->limit || end <= start)
 		return;
 	compile(e, p, tk->key, (uint32_t)(end - start), tk->rel_ok);
-	if (e->state == XS_COMPILED && !rand_is_safe(e)) {
-		free(e->code);
-		e->code = NULL;
-		e->state = XS_NO;
-	}
 }

@@ -29,8 +29,8 @@ void exprcache_free(struct exprcache *c);
  * or false, leaving the parser as it was, when the ordinary parser must
  * read it; then call exprcache_record with tk and its result. */
 bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk);
-/* The same, giving the float and the expression's first token. */
-bool exprcache_try_float(struct parser *p, double *out, const struct token **start, struct exprcache_ticket *tk);
+/* The same for a caller that wants a float (any other result: false). */
+bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket *tk);
 void exprcache_record(struct parser *p, const struct exprcache_ticket *tk, const struct value *v);
 
 #endif
