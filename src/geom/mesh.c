@@ -733,7 +733,7 @@ static bool walk_init(struct walk *w, const struct mesh_data *d, const struct ra
 
 /* Slab test of a node's padded box against (tmin, tmax). A NaN from a
  * plane through the origin parallel to the ray does not narrow the range. */
-static inline bool box_hit(const struct mesh_node *nd, const struct walk *w)
+static inline bool box_hit(const struct mesh_node *nd, const struct walk *w, double *entry)
 {
 	double t0 = w->tmin, t1 = w->tmax;
 	for (int a = 0; a < 3; a++) {
@@ -742,6 +742,7 @@ static inline bool box_hit(const struct mesh_node *nd, const struct walk *w)
 		if (tn > t0) t0 = tn;
 		if (tf < t1) t1 = tf;
 	}
+	*entry = t0;
 	return t0 <= t1;
 }
 
@@ -774,16 +775,43 @@ static void record(struct walk *w, uint32_t tri, const struct tri_hit *th)
 	}
 }
 
+/* Depth first, nearer child first. Both children's boxes are tested at
+ * their parent and kept with their entry distance, so a subtree that
+ * starts beyond the closest hit found meanwhile is dropped unvisited. */
 static void walk(const struct mesh_data *d, struct walk *w)
 {
-	uint32_t stack[STACK_MAX];
+	struct {
+		uint32_t node;
+		double t;
+	} stack[STACK_MAX];
 	int sp = 0;
-	stack[sp++] = 0;
+	double t0;
+	if (!box_hit(&d->nodes[0], w, &t0))
+		return;
+	stack[sp].node = 0;
+	stack[sp++].t = t0;
 	while (sp > 0) {
-		const struct mesh_node *nd = &d->nodes[stack[--sp]];
-		if (!box_hit(nd, w))
+		sp--;
+		if (stack[sp].t > w->tmax)
 			continue;
-		if (nd->count) {
+		const struct mesh_node *nd = &d->nodes[stack[sp].node];
+		if (!nd->count) {
+			double ta, tb;
+			bool ha = box_hit(&d->nodes[nd->first], w, &ta);
+			bool hb = box_hit(&d->nodes[nd->first + 1], w, &tb);
+			if (ha && hb) {
+				bool a_first = ta <= tb;
+				stack[sp].node = a_first ? nd->first + 1 : nd->first;
+				stack[sp++].t = a_first ? tb : ta;
+				stack[sp].node = a_first ? nd->first : nd->first + 1;
+				stack[sp++].t = a_first ? ta : tb;
+			} else if (ha || hb) {
+				stack[sp].node = ha ? nd->first : nd->first + 1;
+				stack[sp++].t = ha ? ta : tb;
+			}
+			continue;
+		}
+		{
 			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
 				const struct idx3 *f = &d->tri[i];
 				struct tri_hit th;
@@ -791,12 +819,6 @@ static void walk(const struct mesh_data *d, struct walk *w)
 				                  w->tmin, w->tmax, &th))
 					record(w, i, &th);
 			}
-		} else if (w->near[nd->axis]) { /* push the far child first */
-			stack[sp++] = nd->first;
-			stack[sp++] = nd->first + 1;
-		} else {
-			stack[sp++] = nd->first + 1;
-			stack[sp++] = nd->first;
 		}
 	}
 }
