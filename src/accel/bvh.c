@@ -192,7 +192,7 @@ void bvh_free(struct bvh *b)
 size_t bvh_node_count(const struct bvh *b) { return b->nnodes; }
 
 /* Slab test against a node box, with the ray's reciprocal direction. */
-static inline bool box_hit(const struct aabb *bx, vec3 org, vec3 inv, double tmin, double tmax)
+static inline bool box_entry(const struct aabb *bx, vec3 org, vec3 inv, double tmin, double tmax, double *entry)
 {
 	double t0 = (bx->lo.x - org.x) * inv.x, t1 = (bx->hi.x - org.x) * inv.x;
 	if (t0 > t1) { double t = t0; t0 = t1; t1 = t; }
@@ -207,7 +207,14 @@ static inline bool box_hit(const struct aabb *bx, vec3 org, vec3 inv, double tmi
 	tmin = t0 > tmin ? t0 : tmin;
 	tmax = t1 < tmax ? t1 : tmax;
 	/* NaN (0 * inf on a face plane) compares false and keeps the box. */
+	*entry = tmin;
 	return tmin <= tmax;
+}
+
+static inline bool box_hit(const struct aabb *bx, vec3 org, vec3 inv, double tmin, double tmax)
+{
+	double entry;
+	return box_entry(bx, org, inv, tmin, tmax, &entry);
 }
 
 static vec3 reciprocal(vec3 d)
@@ -221,14 +228,25 @@ bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double
 	if (b->nobjs == 0)
 		return false;
 	vec3 inv = reciprocal(r->dir);
-	uint32_t stack[STACK_MAX];
+	/* Nearer child first; both children's boxes are tested at the parent
+	 * and kept with their entry distance, so a subtree that starts past
+	 * the closest hit found meanwhile is dropped unvisited. */
+	struct {
+		uint32_t node;
+		double t;
+	} stack[STACK_MAX];
 	int sp = 0;
-	stack[sp++] = 0;
+	double t0;
+	if (!box_entry(&b->nodes[0].box, r->org, inv, tmin, tmax, &t0))
+		return false;
+	stack[sp].node = 0;
+	stack[sp++].t = t0;
 	bool found = false;
 	while (sp > 0) {
-		const struct bvh_node *nd = &b->nodes[stack[--sp]];
-		if (!box_hit(&nd->box, r->org, inv, tmin, tmax))
+		sp--;
+		if (stack[sp].t > tmax)
 			continue;
+		const struct bvh_node *nd = &b->nodes[stack[sp].node];
 		if (nd->count) {
 			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
 				const struct object *o = b->objs[i];
@@ -244,14 +262,19 @@ bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double
 				}
 			}
 		} else {
-			uint32_t left = nd->first, right = nd->first + 1;
-			/* Visit the near child first: push it last. */
-			if (v3_get(r->dir, nd->axis) < 0) {
-				stack[sp++] = left;
-				stack[sp++] = right;
-			} else {
-				stack[sp++] = right;
-				stack[sp++] = left;
+			uint32_t a = nd->first, c = nd->first + 1;
+			double ta, tc;
+			bool ha = box_entry(&b->nodes[a].box, r->org, inv, tmin, tmax, &ta);
+			bool hc = box_entry(&b->nodes[c].box, r->org, inv, tmin, tmax, &tc);
+			if (ha && hc) {
+				bool a_first = ta <= tc;
+				stack[sp].node = a_first ? c : a;
+				stack[sp++].t = a_first ? tc : ta;
+				stack[sp].node = a_first ? a : c;
+				stack[sp++].t = a_first ? ta : tc;
+			} else if (ha || hc) {
+				stack[sp].node = ha ? a : c;
+				stack[sp++].t = ha ? ta : tc;
 			}
 		}
 	}
