@@ -239,6 +239,9 @@ void parse_texture(struct parser *p, struct texture **tex);
 /* A texture statement layered on top of *tex (NULL: none yet), as
  * several texture statements on one object are. */
 void parse_texture_layer(struct parser *p, struct texture **tex);
+/* '{' PATTERN { pattern_modifier | transformation } '}' (the body of
+ * function { pattern { } }) into *pt. */
+void parse_pattern_block(struct parser *p, struct pattern *pt);
 /* The layers of top (copied where shared) with under below its last
  * layer; takes both references and returns the result's. */
 struct texture *parse_layer_onto(struct texture *top, struct texture *under);

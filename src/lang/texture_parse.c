@@ -656,6 +656,37 @@ static bool parse_pattern_modifier(struct parser *p, struct pattern *pt)
 	}
 }
 
+/* pattern_block := '{' pattern_type { pattern_modifier | transformation } '}' */
+void parse_pattern_block(struct parser *p, struct pattern *pt)
+{
+	parse_expect(p, TOK_LBRACE);
+	bool in_object = false;
+	for (;;) {
+		if (in_object && parse_accept(p, TOK_RBRACE)) {
+			in_object = false;
+			continue;
+		}
+		if (parse_accept(p, TOK_RBRACE))
+			break;
+		struct xform xf;
+		enum pattern_kind pk;
+		if (parse_transform_item(p, &xf)) {
+			pattern_transform(pt, &xf);
+			continue;
+		}
+		if (at_pattern(p, &pk)) {
+			parse_pattern_type(p, pt, BLK_PIGMENT);
+			in_object = pk == PAT_OBJECT;
+			continue;
+		}
+		if (pt->kind != PAT_NONE && parse_pattern_modifier(p, pt))
+			continue;
+		parse_expected(p, pt->kind == PAT_NONE ? "a pattern" : "a pattern modifier or '}'");
+	}
+	if (pt->kind == PAT_NONE)
+		parse_error(p, "a pattern function needs a pattern");
+}
+
 /* ---- block lists: `checker color A color B`, `hexagon pigment{} ...` ---- */
 
 /* Before an entry of a block pattern's list is read: an error at the
