@@ -1272,7 +1272,7 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 					parse_error(p, "a texture_map identifier needs a continuous pattern before it");
 				set_map(p, &tx->map, blend_map_ref(v->map));
 				break;
-			default: parse_wrong_kind(p, v, "a pigment, normal, finish or texture_map");
+			default: parse_wrong_kind(p, v, "a texture, pigment, normal, finish or texture_map");
 			}
 			parse_advance(p);
 			continue;
