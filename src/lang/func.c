@@ -5,6 +5,7 @@
 #include "lang/parser.h"
 
 #include "scene/fn.h"
+#include "scene/texture.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -104,6 +105,46 @@ static void c_call_user(struct fcomp *c, struct fn *callee, const char *name, st
 	c->depth -= n - 1;
 }
 
+/* F(x, y, z).component for a colour-valued function F (function {
+ * pigment { } }): the pigment evaluated in place, one component kept. */
+static void c_call_color(struct fcomp *c, struct fn *callee, const char *name, struct srcpos at)
+{
+	struct parser *p = c->p;
+	int n = c_args(c);
+	if (n != 3)
+		parse_error_at(p, at, "function %s takes 3 arguments, not %d", name, n);
+	if (!parse_accept(p, TOK_DOT))
+		parse_error_at(p, at, "function %s gives a color: name a component (.red, .green, .blue, .filter, "
+		               ".transmit, .gray or .x, .y, .z, .t)", name);
+	const struct token *t = parse_peek(p);
+	int i = -1;
+	if (t->kind == TOK_KEYWORD) {
+		switch (t->kw) {
+		case KW_X: case KW_U: case KW_RED: i = 0; break;
+		case KW_Y: case KW_V: case KW_GREEN: i = 1; break;
+		case KW_Z: case KW_BLUE: i = 2; break;
+		case KW_T: case KW_FILTER: i = 3; break;
+		case KW_TRANSMIT: i = 4; break;
+		case KW_GRAY: i = 5; break;
+		default: break;
+		}
+	}
+	if (i < 0)
+		parse_expected(p, "a color component after '.'");
+	parse_advance(p);
+	struct fn *f = c->f;
+	f->callees = realloc(f->callees, (size_t)(f->ncallees + 1) * sizeof *f->callees);
+	if (!f->callees) abort();
+	f->callees[f->ncallees++] = fn_ref(callee);
+	struct fn_instr in;
+	memset(&in, 0, sizeof in);
+	in.op = FN_PIGMENT;
+	in.i = i;
+	in.pig = callee->pig;
+	fn_emit(f, in);
+	c->depth -= 2;
+}
+
 static void c_primary(struct fcomp *c)
 {
 	struct parser *p = c->p;
@@ -133,6 +174,12 @@ static void c_primary(struct fcomp *c)
 		if (v->kind == VAL_FLOAT) {
 			emit(c, FN_CONST, 0, v->v[0], 1);
 			parse_advance(p);
+			return;
+		}
+		if (v->kind == VAL_FUNCTION && v->fn->pig) {
+			struct fn *callee = v->fn;
+			parse_advance(p);
+			c_call_color(c, callee, name, at);
 			return;
 		}
 		if (v->kind == VAL_FUNCTION) {
@@ -324,7 +371,43 @@ static void c_expr(struct fcomp *c)
 	c->p->expr_depth--;
 }
 
-/* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')' ) '}'
+/* pattern '{' PATTERN '}' '}' | pigment '{' PIGMENT_BODY '}' '}' after a
+ * function's '{': a function of x, y, z evaluating the pattern (its value)
+ * or the pigment (its colour: the function is colour-valued). */
+static struct fn *pattern_function(struct parser *p, int np)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	if (np != 3)
+		parse_error_at(p, at, "a pattern or pigment function takes the 3 parameters x, y, z, not %d", np);
+	struct fn *f = fn_new(3);
+	int slot = parse_own(p, f, free_fn_cb);
+	struct fn_instr in;
+	memset(&in, 0, sizeof in);
+	if (parse_is_kw(p, KW_PATTERN)) {
+		parse_advance(p);
+		f->pat = malloc(sizeof *f->pat);
+		if (!f->pat) abort();
+		*f->pat = pattern_make(PAT_NONE);
+		parse_pattern_block(p, f->pat);
+		in.op = FN_PATTERN;
+		in.pat = f->pat;
+	} else {
+		f->pig = pigment_new();
+		parse_pigment(p, &f->pig);
+		in.op = FN_PIGMENT;
+		in.pig = f->pig;
+	}
+	parse_expect(p, TOK_RBRACE);
+	for (int i = 0; i < 3; i++)
+		fn_emit(f, (struct fn_instr){.op = FN_ARG, .i = i});
+	fn_emit(f, in);
+	f->depth = 3;
+	parse_release(p, slot);
+	return f;
+}
+
+/* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')'
+ *   | pattern '{' .. '}' | pigment '{' .. '}' ) '}'
  * The current token is 'function'. */
 struct fn *parse_function(struct parser *p)
 {
@@ -369,6 +452,8 @@ struct fn *parse_function(struct parser *p)
 		fn_emit(f, (struct fn_instr){.op = FN_INTERNAL, .i = count, .k = (int)n});
 		return f;
 	}
+	if (parse_is_kw(p, KW_PATTERN) || parse_is_kw(p, KW_PIGMENT))
+		return pattern_function(p, np);
 	struct fcomp c = {.p = p, .f = fn_new(np)};
 	for (int i = 0; i < np; i++)
 		c.params[i] = params[i];
@@ -397,6 +482,11 @@ struct value parse_call_function(struct parser *p, const struct fn *f, struct sr
 	}
 	if (n != f->nparams)
 		parse_error_at(p, at, "this function takes %d argument%s, not %d", f->nparams, f->nparams == 1 ? "" : "s", n);
+	if (f->pig) {
+		double c[5];
+		fn_eval_color(f, args, c);
+		return val_vector(5, c, VAL_COLOR, at);
+	}
 	return val_float(fn_eval(f, args), at);
 }
 

@@ -18,6 +18,14 @@ enum { POLY_MIN_ORDER = 2, POLY_MAX_ORDER = 7 };
 
 static void free_object_cb(void *o) { object_free(o); }
 
+static void free_material_holder(void *h)
+{
+	struct material *m = h;
+	texture_unref(m->tex);
+	interior_unref(m->interior);
+	free(m);
+}
+
 /* ---- transformations ---- */
 
 /* A transform identifier at the current token, consumed. */
@@ -677,7 +685,8 @@ static void rebuild(struct parser *p, struct obj_state *s)
 	p->owned[s->slot].ptr = n;
 }
 
-/* object_modifier := texture | pigment | finish | transform_item
+/* object_modifier := texture | pigment | normal | finish | interior
+ *   | material | transform_item
  *   | no_shadow | no_image | no_reflection | hollow [BOOL]
  *   | double_illuminate | inverse | clipped_by | bounded_by
  *   | open | sturm | split_union BOOL */
@@ -687,6 +696,7 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	struct xform t;
 	if (parse_transform_item(p, &t)) {
 		object_transform(o, &t);
+		object_transform_textures(o, &t);
 		return true;
 	}
 	const struct token *tk = parse_peek(p);
@@ -694,10 +704,32 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 		return false;
 	struct srcpos at = tk->pos;
 	switch (tk->kw) {
-	case KW_TEXTURE: parse_texture(p, &o->tex); return true;
+	case KW_TEXTURE: parse_texture_layer(p, &o->tex); return true;
 	case KW_PIGMENT: parse_pigment(p, &parse_private_texture(p, &o->tex)->pigment); return true;
+	case KW_NORMAL: parse_normal(p, &parse_private_texture(p, &o->tex)->normal); return true;
 	case KW_FINISH: parse_finish(p, &parse_private_texture(p, &o->tex)->finish); return true;
 	case KW_INTERIOR: parse_interior(p, &o->interior); return true;
+	case KW_MATERIAL: {
+		/* The material's textures layer on the object's, as texture
+		 * statements do; its interior replaces the object's. */
+		struct material *m = calloc(1, sizeof *m);
+		if (!m) abort();
+		int slot = parse_own(p, m, free_material_holder);
+		parse_material(p, m);
+		if (m->tex) {
+			struct texture *top = m->tex;
+			m->tex = NULL;
+			o->tex = parse_layer_onto(top, o->tex);
+		}
+		if (m->interior) {
+			interior_unref(o->interior);
+			o->interior = m->interior;
+			m->interior = NULL;
+		}
+		parse_release(p, slot);
+		free(m);
+		return true;
+	}
 	case KW_NO_SHADOW: parse_advance(p); s->flags |= OBJ_NO_SHADOW; return true;
 	case KW_NO_IMAGE: parse_advance(p); s->flags |= OBJ_NO_IMAGE; return true;
 	case KW_NO_REFLECTION: parse_advance(p); s->flags |= OBJ_NO_REFLECTION; return true;
@@ -861,6 +893,8 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	 * is given to object { CsgIdentifier }). */
 	if (csg_kind_of(o, NULL) && o->tex)
 		object_fill_texture(o, o->tex);
+	if (csg_kind_of(o, NULL) && o->interior)
+		object_fill_interior(o, o->interior);
 	if (!child && p->default_tex)
 		object_fill_texture(o, p->default_tex);
 	parse_release(p, s.slot);

@@ -245,7 +245,26 @@ void parse_write(struct parser *p);
  * parse_free_texture_holder frees a heap `struct texture *` holder and its
  * reference (for parse_own). */
 void parse_texture(struct parser *p, struct texture **tex);
+/* A texture statement layered on top of *tex (NULL: none yet), as
+ * several texture statements on one object are. */
+void parse_texture_layer(struct parser *p, struct texture **tex);
+/* '{' PATTERN { pattern_modifier | transformation } '}' (the body of
+ * function { pattern { } }) into *pt. */
+void parse_pattern_block(struct parser *p, struct pattern *pt);
+/* The layers of top (copied where shared) with under below its last
+ * layer; takes both references and returns the result's. */
+struct texture *parse_layer_onto(struct texture *top, struct texture *under);
+/* texture { } { texture { } } as a declared value (layered when several
+ * follow); the caller owns the result. */
+struct texture *parse_texture_value(struct parser *p);
 void parse_pigment(struct parser *p, struct pigment **pig);
+/* normal { }: replaces or modifies *nrm (NULL: none yet). */
+void parse_normal(struct parser *p, struct normal **nrm);
+/* material { }: its texture and interior into *m (references replaced). */
+void parse_material(struct parser *p, struct material *m);
+/* color_map, colour_map, pigment_map, normal_map, slope_map or
+ * texture_map { } at the current token; the caller owns the result. */
+struct blend_map *parse_map_value(struct parser *p);
 void parse_finish(struct parser *p, struct finish *f);
 void parse_interior(struct parser *p, struct interior **in);
 /* The inside of an image_map, bump_map, image_pattern or material_map

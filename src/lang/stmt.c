@@ -262,6 +262,26 @@ static void free_pigment_holder(void *h)
 	free(h);
 }
 
+static void free_normal_holder(void *h)
+{
+	normal_unref(*(struct normal **)h);
+	free(h);
+}
+
+static void free_interior_holder(void *h)
+{
+	interior_unref(*(struct interior **)h);
+	free(h);
+}
+
+static void free_material_cb(void *x)
+{
+	struct material *m = x;
+	texture_unref(m->tex);
+	interior_unref(m->interior);
+	free(m);
+}
+
 static bool item_value(struct parser *p, struct value *out);
 
 /* Inside a scene item's braces comparisons do not bind again until a new
@@ -328,20 +348,49 @@ static bool item_value(struct parser *p, struct value *out)
 		out->fin = f;
 		return true;
 	}
-	case KW_TEXTURE: {
-		/* parse_texture replaces the texture it is given, so what is
-		 * protected is a holder of the current pointer. */
-		struct texture **holder = calloc(1, sizeof *holder);
-		if (!holder) abort();
-		int slot = parse_own(p, holder, parse_free_texture_holder);
-		parse_texture(p, holder);
+	case KW_TEXTURE:
 		out->kind = VAL_TEXTURE;
-		out->tex = *holder;
-		*holder = NULL;
+		out->tex = parse_texture_value(p);
+		return true;
+	case KW_NORMAL: {
+		struct normal **h = calloc(1, sizeof *h);
+		if (!h) abort();
+		int slot = parse_own(p, h, free_normal_holder);
+		parse_normal(p, h);
+		out->kind = VAL_NORMAL;
+		out->nrm = *h;
+		*h = NULL;
 		parse_release(p, slot);
-		free(holder);
+		free(h);
 		return true;
 	}
+	case KW_INTERIOR: {
+		struct interior **h = calloc(1, sizeof *h);
+		if (!h) abort();
+		int slot = parse_own(p, h, free_interior_holder);
+		parse_interior(p, h);
+		out->kind = VAL_INTERIOR;
+		out->interior = *h;
+		*h = NULL;
+		parse_release(p, slot);
+		free(h);
+		return true;
+	}
+	case KW_MATERIAL: {
+		struct material *m = calloc(1, sizeof *m);
+		if (!m) abort();
+		int slot = parse_own(p, m, free_material_cb);
+		parse_material(p, m);
+		parse_release(p, slot);
+		out->kind = VAL_MATERIAL;
+		out->mat = m;
+		return true;
+	}
+	case KW_COLOR_MAP: case KW_COLOUR_MAP: case KW_PIGMENT_MAP: case KW_NORMAL_MAP: case KW_SLOPE_MAP:
+	case KW_TEXTURE_MAP:
+		out->kind = VAL_MAP;
+		out->map = parse_map_value(p);
+		return true;
 	case KW_CAMERA: {
 		struct camera *c = malloc(sizeof *c);
 		if (!c) abort();

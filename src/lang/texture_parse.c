@@ -1,85 +1,1534 @@
-/* texture_parse.c: pigments, normals, textures, maps, materials and
- * #default. Each grammar function names its production above it. */
+/* texture_parse.c: pigments, normals, textures (plain, patterned, layered,
+ * material_map), the patterns they use with their parameters and
+ * modifiers (wave types, turbulence, warps, transformations), the maps
+ * (color_map, pigment_map, normal_map, slope_map, texture_map), materials
+ * and #default. Each grammar function names its production above it.
+ *
+ * A block (pigment, normal, texture) is parsed by one body function that
+ * stops at a given closing token, so that `pigment { BODY }` and a map
+ * entry `[ VALUE BODY ]` share it. What a block refers to while it is
+ * being read is held through a heap holder registered with parse_own, so
+ * an error anywhere frees it. */
 #include "lang/parser.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-/* ---- textures ---- */
+/* POV-Ray's limit on the entries of a map. */
+enum { MAP_MAX_ENTRIES = 256 };
 
-/* pigment := pigment '{' [IDENT] [color] '}' */
-void parse_pigment(struct parser *p, struct pigment **pig)
+/* What a block builds: its list entries and map items are of this kind. */
+enum blk { BLK_PIGMENT, BLK_NORMAL, BLK_TEXTURE };
+
+static const char *const blk_names[] = {"pigment", "normal", "texture"};
+
+static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind end);
+static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end);
+static void texture_body(struct parser *p, struct texture **tex, enum tok_kind end);
+static struct blend_map *parse_map(struct parser *p, enum map_kind kind, enum pattern_kind pk);
+
+/* ---- holders: what a block refers to while it is read ---- */
+
+static void free_pigment_holder(void *h)
 {
-	parse_advance(p); /* pigment */
+	pigment_unref(*(struct pigment **)h);
+	free(h);
+}
+
+static void free_normal_holder(void *h)
+{
+	normal_unref(*(struct normal **)h);
+	free(h);
+}
+
+static void free_map_cb(void *m) { blend_map_unref(m); }
+
+static void *holder_new(size_t size)
+{
+	void *h = calloc(1, size);
+	if (!h) abort();
+	return h;
+}
+
+/* A new pigment read by pigment_body up to `end`, starting from `from`
+ * (a reference is taken) or from black. The caller owns the result. */
+static struct pigment *read_pigment(struct parser *p, struct pigment *from, enum tok_kind end)
+{
+	struct pigment **h = holder_new(sizeof *h);
+	*h = from ? pigment_ref(from) : pigment_new();
+	int slot = parse_own(p, h, free_pigment_holder);
+	pigment_body(p, h, end);
+	struct pigment *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
+static struct normal *read_normal(struct parser *p, struct normal *from, enum tok_kind end)
+{
+	struct normal **h = holder_new(sizeof *h);
+	*h = from ? normal_ref(from) : NULL;
+	int slot = parse_own(p, h, free_normal_holder);
+	normal_body(p, h, end);
+	struct normal *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
+static struct texture *read_texture(struct parser *p, enum tok_kind end)
+{
+	struct texture **h = holder_new(sizeof *h);
+	int slot = parse_own(p, h, parse_free_texture_holder);
+	texture_body(p, h, end);
+	struct texture *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
+/* Make *pig (and the others) one this holder may change alone. */
+static struct pigment *own_pigment(struct pigment **pig)
+{
+	if ((*pig)->refs > 1) {
+		struct pigment *c = pigment_copy(*pig);
+		pigment_unref(*pig);
+		*pig = c;
+	}
+	return *pig;
+}
+
+static struct normal *own_normal(struct normal **n)
+{
+	if (!*n)
+		*n = normal_new(PAT_NONE);
+	else if ((*n)->refs > 1) {
+		struct normal *c = normal_copy(*n);
+		normal_unref(*n);
+		*n = c;
+	}
+	return *n;
+}
+
+static struct texture *own_texture(struct texture **t)
+{
+	if ((*t)->refs > 1) {
+		struct texture *c = texture_copy(*t);
+		texture_unref(*t);
+		*t = c;
+	}
+	return *t;
+}
+
+static struct texture *default_texture(struct parser *p)
+{
+	return p->default_tex ? texture_copy(p->default_tex) : texture_new();
+}
+
+/* ---- colours ---- */
+
+/* A numeric value as a colour, as `color V` reads it: a float sets all
+ * five components, a vector is padded with zeros. */
+static struct rgbft value_color(struct parser *p, struct value *v)
+{
+	if (!val_is_numeric(v))
+		parse_error_at(p, v->pos, "expected a color, found a %s", val_kind_name(v->kind));
+	if (v->kind == VAL_FLOAT)
+		return (struct rgbft){v->v[0], v->v[0], v->v[0], v->v[0], v->v[0]};
+	val_widen(v, 5);
+	return (struct rgbft){v->v[0], v->v[1], v->v[2], v->v[3], v->v[4]};
+}
+
+/* The colours POV-Ray gives the entries of a block pattern's list that
+ * are not written (measured with function { pigment { ... } }). */
+static struct rgbft block_default_color(enum pattern_kind k, int i)
+{
+	static const struct rgbft red = {1, 0, 0, 0, 0}, green = {0, 1, 0, 0, 0}, blue = {0, 0, 1, 0, 0},
+	                          yellow = {1, 1, 0, 0, 0}, cyan = {0, 1, 1, 0, 0}, magenta = {1, 0, 1, 0, 0},
+	                          grey = {0.5, 0.5, 0.5, 0, 0}, brick = {0.6, 0.15, 0.15, 0, 0};
+	static const struct rgbft six[6] = {red, green, blue, yellow, cyan, magenta};
+	switch (k) {
+	case PAT_CHECKER: case PAT_OBJECT: return i == 0 ? blue : green;
+	case PAT_HEXAGON: return i == 0 ? blue : i == 1 ? green : red;
+	case PAT_BRICK: return i == 0 ? grey : brick;
+	default: return six[i % 6];
+	}
+}
+
+/* ---- patterns ---- */
+
+/* The pattern a keyword names, or PAT_NONE. */
+static enum pattern_kind pattern_of_kw(enum kw k)
+{
+	switch (k) {
+	case KW_AGATE: return PAT_AGATE;
+	case KW_AOI: return PAT_AOI;
+	case KW_AVERAGE: return PAT_AVERAGE;
+	case KW_BOXED: return PAT_BOXED;
+	case KW_BOZO: return PAT_BOZO;
+	case KW_BRICK: return PAT_BRICK;
+	case KW_BUMPS: return PAT_BUMPS;
+	case KW_CELLS: return PAT_CELLS;
+	case KW_CHECKER: return PAT_CHECKER;
+	case KW_CRACKLE: return PAT_CRACKLE;
+	case KW_CUBIC: return PAT_CUBIC;
+	case KW_CYLINDRICAL: return PAT_CYLINDRICAL;
+	case KW_DENTS: return PAT_DENTS;
+	case KW_FACETS: return PAT_FACETS;
+	case KW_FUNCTION: return PAT_FUNCTION;
+	case KW_GRADIENT: return PAT_GRADIENT;
+	case KW_GRANITE: return PAT_GRANITE;
+	case KW_HEXAGON: return PAT_HEXAGON;
+	case KW_IMAGE_PATTERN: return PAT_IMAGE;
+	case KW_JULIA: return PAT_JULIA;
+	case KW_LEOPARD: return PAT_LEOPARD;
+	case KW_MAGNET: return PAT_MAGNET;
+	case KW_MANDEL: return PAT_MANDEL;
+	case KW_MARBLE: return PAT_MARBLE;
+	case KW_OBJECT: return PAT_OBJECT;
+	case KW_ONION: return PAT_ONION;
+	case KW_PAVEMENT: return PAT_PAVEMENT;
+	case KW_PIGMENT_PATTERN: return PAT_PIGMENT;
+	case KW_PLANAR: return PAT_PLANAR;
+	case KW_QUILTED: return PAT_QUILTED;
+	case KW_RADIAL: return PAT_RADIAL;
+	case KW_RIPPLES: return PAT_RIPPLES;
+	case KW_SLOPE: return PAT_SLOPE;
+	case KW_SPHERICAL: return PAT_SPHERICAL;
+	case KW_SPIRAL1: return PAT_SPIRAL1;
+	case KW_SPIRAL2: return PAT_SPIRAL2;
+	case KW_SPOTTED: return PAT_SPOTTED;
+	case KW_SQUARE: return PAT_SQUARE;
+	case KW_TILING: return PAT_TILING;
+	case KW_TRIANGULAR: return PAT_TRIANGULAR;
+	case KW_WAVES: return PAT_WAVES;
+	case KW_WOOD: return PAT_WOOD;
+	case KW_WRINKLES: return PAT_WRINKLES;
+	default: return PAT_NONE;
+	}
+}
+
+/* Is the current token a pattern keyword? Its kind in *k. */
+static bool at_pattern(struct parser *p, enum pattern_kind *k)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	*k = pattern_of_kw((enum kw)t->kw);
+	return *k != PAT_NONE;
+}
+
+/* A pattern of kind k with POV-Ray's defaults for the kind's own
+ * parameters (the manual's values). */
+static struct pattern pattern_with_defaults(enum pattern_kind k)
+{
+	struct pattern pt = pattern_make(k);
+	switch (k) {
+	case PAT_AGATE: pt.f[0] = 1.0; break;                     /* agate_turb */
+	case PAT_BRICK: pt.vec = v3(8, 3, 4.5); pt.vec2.x = 0.5; break;
+	case PAT_CRACKLE: pt.f[0] = 2; pt.f[1] = 0; pt.form = v3(-1, 1, 0); break;
+	case PAT_FACETS: pt.vec.x = 0.1; pt.f[0] = 2; break;       /* size; metric */
+	case PAT_QUILTED: pt.f[0] = 1; pt.f[1] = 1; break;         /* control0, control1 */
+	case PAT_GRADIENT: pt.vec = v3(1, 0, 0); break;
+	case PAT_SLOPE: pt.f[0] = 0; pt.f[1] = 1; pt.f[2] = 0; pt.f[3] = 1; break;
+	case PAT_PAVEMENT: pt.n[0] = 3; pt.n[1] = 1; pt.n[2] = 1; break;
+	case PAT_JULIA: case PAT_MANDEL: case PAT_MAGNET:
+		pt.fractal.exponent = 2;
+		pt.fractal.magnet_type = 1;
+		pt.fractal.exterior_type = 1;
+		pt.fractal.interior_type = 0;
+		pt.fractal.exterior_factor = pt.fractal.interior_factor = 1;
+		break;
+	/* The manual names the patterns whose wave is triangle_wave by default. */
+	case PAT_MARBLE: case PAT_WOOD: case PAT_SPIRAL1: case PAT_SPIRAL2: pt.wave = WAVE_TRIANGLE; break;
+	default: break;
+	}
+	return pt;
+}
+
+/* An integer parameter in [lo, hi], named `what` in the message. */
+static int parse_int_in(struct parser *p, const char *what, int lo, int hi)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	double d = parse_float(p);
+	if (!(d >= lo && d <= hi))
+		parse_error_at(p, at, "%s must be from %d to %d, not %g", what, lo, hi, d);
+	return (int)d;
+}
+
+static int parse_iterations(struct parser *p)
+{
+	struct srcpos at = parse_peek(p)->pos;
+	double d = parse_float(p);
+	if (!(d >= 1 && d <= 4294967295.0))
+		parse_error_at(p, at, "a fractal's iterations must be at least 1, not %g", d);
+	return d > 2147483647.0 ? 2147483647 : (int)d;
+}
+
+/* A 2-D vector (a complex number) as julia and magnet read it. */
+static void parse_complex(struct parser *p, double c[2])
+{
+	struct value v = parse_expression(p);
+	if (!val_is_numeric(&v))
+		parse_error_at(p, v.pos, "expected a 2-D vector, found a %s", val_kind_name(v.kind));
+	val_widen(&v, 2);
+	c[0] = v.v[0];
+	c[1] = v.v[1];
+}
+
+/* slope_args := VECTOR [',' LO ',' HI] [altitude VECTOR [',' LO ',' HI]] */
+static void parse_slope_args(struct parser *p, struct pattern *pt)
+{
+	pt->vec = parse_vector(p);
+	if (parse_accept(p, TOK_COMMA)) {
+		pt->f[0] = parse_float(p);
+		parse_expect(p, TOK_COMMA);
+		pt->f[1] = parse_float(p);
+	}
+	if (parse_accept_kw(p, KW_ALTITUDE)) {
+		pt->vec2 = parse_vector(p);
+		if (parse_accept(p, TOK_COMMA)) {
+			pt->f[2] = parse_float(p);
+			parse_expect(p, TOK_COMMA);
+			pt->f[3] = parse_float(p);
+		}
+	}
+}
+
+/* pattern_type := PATTERN_KEYWORD pattern_arguments
+ * Replaces *pt by the pattern at the current token with its arguments:
+ *   gradient V | spiral1 N | spiral2 N | tiling N | julia V ',' N | mandel N
+ *   | magnet (1|2) (mandel N | julia V ',' N) | object '{' (OBJECT | IDENT)
+ *     (the list and the '}' are the caller's)
+ *   | function '{' BODY '}' | pigment_pattern '{' PIGMENT_BODY '}'
+ *   | image_pattern '{' IMAGE '}' | slope ('{' slope_args '}' | slope_args)
+ *   | any other pattern name alone. */
+static void parse_pattern_type(struct parser *p, struct pattern *pt, enum blk blk)
+{
+	const struct token *t = parse_peek(p);
+	struct srcpos at = t->pos;
+	enum kw kw = (enum kw)t->kw;
+	enum pattern_kind k = pattern_of_kw(kw);
+	if (k == PAT_FACETS && blk != BLK_NORMAL)
+		parse_error_at(p, at, "the facets pattern can only be used in a normal, not in a %s", blk_names[blk]);
+	pattern_clear(pt);
+	*pt = pattern_with_defaults(k);
+	if (k == PAT_OBJECT) {
+		/* object '{' (IDENT | OBJECT) LIST_A [','] LIST_B '}': the list
+		 * is the block's, so the caller reads it and the '}' (see
+		 * struct body_state). */
+		parse_advance(p);
+		parse_expect(p, TOK_LBRACE);
+		const struct token *ot = parse_peek(p);
+		if (ot->kind == TOK_KEYWORD && parse_is_object_start((enum kw)ot->kw)) {
+			pt->obj = parse_object(p, false);
+		} else {
+			const struct value *v = parse_ident_value(p);
+			if (!v)
+				parse_expected(p, "an object or an object identifier");
+			if (v->kind != VAL_OBJECT)
+				parse_wrong_kind(p, v, "an object");
+			pt->obj = object_copy(v->obj);
+			parse_advance(p);
+		}
+		return;
+	}
+	if (k == PAT_FUNCTION) {
+		pt->fn = parse_function(p);
+		return;
+	}
+	parse_advance(p);
+	switch (k) {
+	case PAT_GRADIENT: pt->vec = parse_vector(p); break;
+	case PAT_SPIRAL1: case PAT_SPIRAL2: pt->n[0] = (int)parse_float(p); break;
+	case PAT_TILING: pt->n[0] = parse_int_in(p, "the tiling pattern's number", 1, 27); break;
+	case PAT_JULIA:
+		parse_complex(p, pt->fractal.c);
+		parse_expect(p, TOK_COMMA);
+		pt->fractal.iterations = parse_iterations(p);
+		break;
+	case PAT_MANDEL: pt->fractal.iterations = parse_iterations(p); break;
+	case PAT_MAGNET:
+		pt->fractal.magnet_type = parse_int_in(p, "the magnet type", 1, 2);
+		if (parse_accept_kw(p, KW_MANDEL)) {
+			pt->fractal.iterations = parse_iterations(p);
+		} else if (parse_accept_kw(p, KW_JULIA)) {
+			pt->fractal.julia = true;
+			parse_complex(p, pt->fractal.c);
+			parse_expect(p, TOK_COMMA);
+			pt->fractal.iterations = parse_iterations(p);
+		} else {
+			parse_expected(p, "mandel or julia after the magnet type");
+		}
+		break;
+	case PAT_PIGMENT:
+		parse_expect(p, TOK_LBRACE);
+		pt->pig = read_pigment(p, NULL, TOK_RBRACE);
+		break;
+	case PAT_IMAGE:
+		parse_expect(p, TOK_LBRACE);
+		parse_image_mapping(p, &pt->img);
+		parse_expect(p, TOK_RBRACE);
+		break;
+	case PAT_SLOPE:
+		if (parse_accept(p, TOK_LBRACE)) {
+			parse_slope_args(p, pt);
+			parse_expect(p, TOK_RBRACE);
+		} else {
+			parse_slope_args(p, pt);
+		}
+		break;
+	default:
+		break;
+	}
+}
+
+/* turb_items := { octaves N | omega F | lambda F } into t (true if one
+ * was read). */
+static bool parse_turb_item(struct parser *p, struct turbulence *t)
+{
+	if (parse_accept_kw(p, KW_OCTAVES)) {
+		t->octaves = parse_int_in(p, "octaves", 1, 10);
+		return true;
+	}
+	if (parse_accept_kw(p, KW_OMEGA)) {
+		t->omega = parse_float(p);
+		return true;
+	}
+	if (parse_accept_kw(p, KW_LAMBDA)) {
+		t->lambda = parse_float(p);
+		return true;
+	}
+	return false;
+}
+
+/* warp := warp '{' warp_item '}'
+ * warp_item := repeat V [offset V] [flip V]
+ *            | black_hole V ',' F { strength F | falloff F | inverse | repeat V | turbulence V }
+ *            | turbulence V { turb_items }
+ *            | cylindrical | spherical | toroidal { orientation V | dist_exp F | major_radius F }
+ *            | planar [V ',' F] | cubic */
+static void parse_warp(struct parser *p, struct pattern *pt)
+{
+	parse_advance(p); /* warp */
 	parse_expect(p, TOK_LBRACE);
+	struct pattern_op op;
+	memset(&op, 0, sizeof op);
+	op.turb.octaves = 6;
+	op.turb.omega = 0.5;
+	op.turb.lambda = 2.0;
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		parse_expected(p, "a warp type (repeat, black_hole, turbulence, cylindrical, spherical, toroidal, planar or cubic)");
+	switch (t->kw) {
+	case KW_REPEAT:
+		parse_advance(p);
+		op.kind = POP_REPEAT;
+		op.v1 = parse_vector(p);
+		for (;;) {
+			if (parse_accept_kw(p, KW_OFFSET))
+				op.v2 = parse_vector(p);
+			else if (parse_accept_kw(p, KW_FLIP))
+				op.v3 = parse_vector(p);
+			else
+				break;
+		}
+		break;
+	case KW_BLACK_HOLE:
+		parse_advance(p);
+		op.kind = POP_BLACK_HOLE;
+		op.v1 = parse_vector(p);
+		parse_expect(p, TOK_COMMA);
+		op.f1 = parse_float(p);
+		op.f2 = 2; /* falloff */
+		op.f3 = 1; /* strength */
+		for (;;) {
+			if (parse_accept_kw(p, KW_STRENGTH))
+				op.f3 = parse_float(p);
+			else if (parse_accept_kw(p, KW_FALLOFF))
+				op.f2 = parse_float(p);
+			else if (parse_accept_kw(p, KW_INVERSE))
+				op.f4 = 1;
+			else if (parse_accept_kw(p, KW_REPEAT))
+				op.v2 = parse_vector(p);
+			else if (parse_accept_kw(p, KW_TURBULENCE))
+				op.turb.amount = op.v3 = parse_vector(p);
+			else if (!parse_turb_item(p, &op.turb))
+				break;
+		}
+		break;
+	case KW_TURBULENCE:
+		parse_advance(p);
+		op.kind = POP_TURBULENCE;
+		op.turb.amount = parse_vector(p);
+		while (parse_turb_item(p, &op.turb))
+			;
+		break;
+	case KW_CYLINDRICAL: case KW_SPHERICAL: case KW_TOROIDAL:
+		op.kind = t->kw == KW_CYLINDRICAL ? POP_CYLINDRICAL : t->kw == KW_SPHERICAL ? POP_SPHERICAL : POP_TOROIDAL;
+		parse_advance(p);
+		op.v1 = v3(0, 0, 1);
+		op.f2 = 1; /* major_radius */
+		for (;;) {
+			if (parse_accept_kw(p, KW_ORIENTATION))
+				op.v1 = parse_vector(p);
+			else if (parse_accept_kw(p, KW_DIST_EXP))
+				op.f1 = parse_float(p);
+			else if (op.kind == POP_TOROIDAL && parse_accept_kw(p, KW_MAJOR_RADIUS))
+				op.f2 = parse_float(p);
+			else
+				break;
+		}
+		break;
+	case KW_PLANAR:
+		parse_advance(p);
+		op.kind = POP_PLANAR;
+		op.v1 = v3(0, 0, 1);
+		if (parse_starts_expression(p)) {
+			op.v1 = parse_vector(p);
+			parse_expect(p, TOK_COMMA);
+			op.f1 = parse_float(p);
+		}
+		break;
+	case KW_CUBIC:
+		parse_advance(p);
+		op.kind = POP_CUBIC;
+		break;
+	default:
+		parse_expected(p, "a warp type (repeat, black_hole, turbulence, cylindrical, spherical, toroidal, planar or cubic)");
+	}
+	parse_expect(p, TOK_RBRACE);
+	pattern_add_op(pt, &op);
+}
+
+/* A kind-specific modifier used with another kind: POV-Ray's error. */
+static _Noreturn void not_for_kind(struct parser *p, struct srcpos at, enum kw k, const char *kinds)
+{
+	parse_error_at(p, at, "'%s' can only be used with the %s pattern", kw_names[k], kinds);
+}
+
+static bool is_fractal(enum pattern_kind k)
+{
+	return k == PAT_JULIA || k == PAT_MANDEL || k == PAT_MAGNET;
+}
+
+/* pattern_modifier := turbulence (V|F) | octaves N | omega F | lambda F
+ *   | frequency F | phase F | ramp_wave | triangle_wave | sine_wave
+ *   | scallop_wave | cubic_wave | poly_wave [F] | noise_generator N
+ *   | warp | uv_mapping
+ *   | the kinds' own: agate_turb F | brick_size V | mortar F | metric F
+ *   | offset F | solid | form (V|N) | control0 F | control1 F | exponent N
+ *   | interior N [',' F] | exterior N [',' F] | number_of_sides N
+ *   | number_of_tiles N | pattern N | coords F | size F
+ * Transformations are the caller's (they reach the block's map items).
+ * Returns false, reading nothing, at anything else. */
+static bool parse_pattern_modifier(struct parser *p, struct pattern *pt)
+{
+	const struct token *t = parse_peek(p);
+	if (t->kind != TOK_KEYWORD)
+		return false;
+	struct srcpos at = t->pos;
+	enum kw k = (enum kw)t->kw;
+	enum pattern_kind pk = pt->kind;
+	switch (k) {
+	case KW_TURBULENCE: parse_advance(p); pt->has_turbulence = true; pt->turb.amount = parse_vector(p); return true;
+	case KW_OCTAVES: case KW_OMEGA: case KW_LAMBDA: return parse_turb_item(p, &pt->turb);
+	case KW_FREQUENCY: parse_advance(p); pt->frequency = parse_float(p); return true;
+	case KW_PHASE: parse_advance(p); pt->phase = parse_float(p); return true;
+	case KW_RAMP_WAVE: parse_advance(p); pt->wave = WAVE_RAMP; return true;
+	case KW_TRIANGLE_WAVE: parse_advance(p); pt->wave = WAVE_TRIANGLE; return true;
+	case KW_SINE_WAVE: parse_advance(p); pt->wave = WAVE_SINE; return true;
+	case KW_SCALLOP_WAVE: parse_advance(p); pt->wave = WAVE_SCALLOP; return true;
+	case KW_CUBIC_WAVE: parse_advance(p); pt->wave = WAVE_CUBIC; return true;
+	case KW_POLY_WAVE:
+		parse_advance(p);
+		pt->wave = WAVE_POLY;
+		pt->wave_exponent = 1;
+		if (parse_starts_expression(p))
+			pt->wave_exponent = parse_float(p);
+		return true;
+	case KW_NOISE_GENERATOR:
+		parse_advance(p);
+		pt->noise_generator = parse_int_in(p, "noise_generator", 1, 3);
+		return true;
+	case KW_WARP: parse_warp(p, pt); return true;
+	case KW_UV_MAPPING: parse_advance(p); pt->uv_mapping = true; return true;
+	case KW_AGATE_TURB:
+		if (pk != PAT_AGATE) not_for_kind(p, at, k, "agate");
+		parse_advance(p);
+		pt->f[0] = parse_float(p);
+		return true;
+	case KW_BRICK_SIZE:
+		if (pk != PAT_BRICK) not_for_kind(p, at, k, "brick");
+		parse_advance(p);
+		pt->vec = parse_vector(p);
+		return true;
+	case KW_MORTAR:
+		if (pk != PAT_BRICK) not_for_kind(p, at, k, "brick");
+		parse_advance(p);
+		pt->vec2.x = parse_float(p);
+		return true;
+	case KW_METRIC:
+		if (pk != PAT_CRACKLE && pk != PAT_FACETS) not_for_kind(p, at, k, "crackle or facets");
+		parse_advance(p);
+		pt->f[0] = parse_float(p);
+		return true;
+	case KW_OFFSET:
+		if (pk != PAT_CRACKLE) not_for_kind(p, at, k, "crackle");
+		parse_advance(p);
+		pt->f[1] = parse_float(p);
+		return true;
+	case KW_SOLID:
+		if (pk != PAT_CRACKLE) not_for_kind(p, at, k, "crackle");
+		parse_advance(p);
+		pt->n[0] = 1;
+		return true;
+	case KW_FORM:
+		parse_advance(p);
+		if (pk == PAT_CRACKLE)
+			pt->form = parse_vector(p);
+		else if (pk == PAT_PAVEMENT)
+			pt->n[5] = parse_int_in(p, "a pavement's form", 0, 3);
+		else
+			not_for_kind(p, at, k, "crackle or pavement");
+		return true;
+	case KW_CONTROL0: case KW_CONTROL1:
+		if (pk != PAT_QUILTED) not_for_kind(p, at, k, "quilted");
+		parse_advance(p);
+		pt->f[k == KW_CONTROL0 ? 0 : 1] = parse_float(p);
+		return true;
+	case KW_EXPONENT:
+		if (pk != PAT_JULIA && pk != PAT_MANDEL) not_for_kind(p, at, k, "mandel or julia");
+		parse_advance(p);
+		pt->fractal.exponent = parse_int_in(p, "a fractal's exponent", 2, 33);
+		return true;
+	case KW_INTERIOR: case KW_EXTERIOR: {
+		bool in = k == KW_INTERIOR;
+		if (pk == PAT_PAVEMENT) {
+			parse_advance(p);
+			pt->n[in ? 4 : 3] = parse_int_in(p, in ? "a pavement's interior" : "a pavement's exterior", 0, 2);
+			return true;
+		}
+		if (!is_fractal(pk))
+			return false; /* interior { } of an object or a material */
+		parse_advance(p);
+		int type = parse_int_in(p, in ? "the interior type" : "the exterior type", 0, in ? 6 : 8);
+		double factor = 1;
+		if (parse_accept(p, TOK_COMMA))
+			factor = parse_float(p);
+		if (in) {
+			pt->fractal.interior_type = type;
+			pt->fractal.interior_factor = factor;
+		} else {
+			pt->fractal.exterior_type = type;
+			pt->fractal.exterior_factor = factor;
+		}
+		return true;
+	}
+	case KW_NUMBER_OF_SIDES: case KW_NUMBER_OF_TILES: case KW_PATTERN: {
+		if (pk != PAT_PAVEMENT) not_for_kind(p, at, k, "pavement");
+		parse_advance(p);
+		int i = k == KW_NUMBER_OF_SIDES ? 0 : k == KW_NUMBER_OF_TILES ? 1 : 2;
+		if (i == 0) {
+			struct srcpos vat = parse_peek(p)->pos;
+			int s = (int)parse_float(p);
+			if (s != 3 && s != 4 && s != 6)
+				parse_error_at(p, vat, "number_of_sides must be 3, 4 or 6, not %d", s);
+			pt->n[0] = s;
+		} else {
+			pt->n[i] = parse_int_in(p, i == 1 ? "number_of_tiles" : "a pavement's pattern", 1, i == 1 ? 6 : 35);
+		}
+		return true;
+	}
+	case KW_COORDS: case KW_SIZE:
+		if (pk != PAT_FACETS) not_for_kind(p, at, k, "facets");
+		parse_advance(p);
+		if (k == KW_COORDS)
+			pt->vec.y = parse_float(p);
+		else
+			pt->vec.x = parse_float(p);
+		return true;
+	default:
+		return false;
+	}
+}
+
+/* pattern_block := '{' pattern_type { pattern_modifier | transformation } '}' */
+void parse_pattern_block(struct parser *p, struct pattern *pt)
+{
+	parse_expect(p, TOK_LBRACE);
+	bool in_object = false;
+	for (;;) {
+		if (in_object && parse_accept(p, TOK_RBRACE)) {
+			in_object = false;
+			continue;
+		}
+		if (parse_accept(p, TOK_RBRACE))
+			break;
+		struct xform xf;
+		enum pattern_kind pk;
+		if (parse_transform_item(p, &xf)) {
+			pattern_transform(pt, &xf);
+			continue;
+		}
+		if (at_pattern(p, &pk)) {
+			parse_pattern_type(p, pt, BLK_PIGMENT);
+			in_object = pk == PAT_OBJECT;
+			continue;
+		}
+		if (pt->kind != PAT_NONE && parse_pattern_modifier(p, pt))
+			continue;
+		parse_expected(p, pt->kind == PAT_NONE ? "a pattern" : "a pattern modifier or '}'");
+	}
+	if (pt->kind == PAT_NONE)
+		parse_error(p, "a pattern function needs a pattern");
+}
+
+/* ---- block lists: `checker color A color B`, `hexagon pigment{} ...` ---- */
+
+/* Before an entry of a block pattern's list is read: an error at the
+ * current token when the list is full. `what` names what it holds. */
+static void list_room(struct parser *p, const struct blend_map *m, const struct pattern *pt, const char *what)
+{
+	int max = pattern_block_entries(pt->kind);
+	if (m && m->n >= max)
+		parse_error(p, "the %s pattern takes at most %d %s", pattern_name(pt->kind), max, what);
+}
+
+/* A new entry of a block pattern's list in *mp (created, of the given
+ * kind, with room for the pattern's number of entries on the first); the
+ * caller has checked there is room and fills the entry. */
+static struct map_entry *list_entry(struct blend_map **mp, enum map_kind kind, const struct pattern *pt)
+{
+	if (!*mp) {
+		*mp = blend_map_new(kind, pattern_block_entries(pt->kind));
+		(*mp)->n = 0;
+	}
+	struct blend_map *m = *mp;
+	struct map_entry *e = &m->e[m->n];
+	memset(e, 0, sizeof *e);
+	e->value = m->n;
+	m->n++;
+	return e;
+}
+
+/* Complete a block pattern's list with POV-Ray's defaults for the entries
+ * not written. */
+static void finish_list(struct parser *p, struct blend_map *m, const struct pattern *pt)
+{
+	int max = pattern_block_entries(pt->kind);
+	if (!m || !max)
+		return;
+	for (int i = m->n; i < max; i++) {
+		struct map_entry *e = &m->e[i];
+		memset(e, 0, sizeof *e);
+		e->value = i;
+		e->color = block_default_color(pt->kind, i);
+		if (m->kind == MAP_PIGMENT) {
+			struct pigment *pg = pigment_new();
+			pg->color = e->color;
+			e->item = pg;
+		} else if (m->kind == MAP_TEXTURE) {
+			e->item = default_texture(p);
+		}
+	}
+	m->n = max;
+}
+
+/* ---- pigment ---- */
+
+/* A map given to a block: a map identifier of the right kind or a map
+ * statement. `what` names the block for messages. */
+static void set_map(struct parser *p, struct blend_map **dst, struct blend_map *m)
+{
+	(void)p;
+	blend_map_unref(*dst);
+	*dst = m;
+}
+
+static bool is_map_kw(enum kw k, enum map_kind *kind)
+{
+	switch (k) {
+	case KW_COLOR_MAP: case KW_COLOUR_MAP: *kind = MAP_COLOR; return true;
+	case KW_PIGMENT_MAP: *kind = MAP_PIGMENT; return true;
+	case KW_NORMAL_MAP: *kind = MAP_NORMAL; return true;
+	case KW_SLOPE_MAP: *kind = MAP_SLOPE; return true;
+	case KW_TEXTURE_MAP: *kind = MAP_TEXTURE; return true;
+	default: return false;
+	}
+}
+
+static const char *map_kind_name(enum map_kind k)
+{
+	switch (k) {
+	case MAP_COLOR: return "color_map";
+	case MAP_PIGMENT: return "pigment_map";
+	case MAP_NORMAL: return "normal_map";
+	case MAP_SLOPE: return "slope_map";
+	case MAP_TEXTURE: return "texture_map";
+	}
+	return "map";
+}
+
+/* A map statement for a block whose pattern is pk: block patterns take
+ * lists, not maps (POV-Ray's rule). */
+static struct blend_map *block_map(struct parser *p, enum map_kind kind, const struct pattern *pt)
+{
+	if (pattern_is_block(pt->kind))
+		parse_error(p, "the %s pattern takes a list of entries, not a %s", pattern_name(pt->kind),
+		            map_kind_name(kind));
+	if (pt->kind == PAT_NONE)
+		parse_error(p, "a %s needs a pattern before it", map_kind_name(kind));
+	return parse_map(p, kind, pt->kind);
+}
+
+/* pigment_body := [IDENT] [pigment_type] { pigment_modifier }
+ * pigment_type := COLOR | pattern_type | image_map '{' IMAGE '}'
+ * pigment_modifier := pattern_modifier | transformation | COLOR (a block
+ *   pattern's list) | pigment '{' '}' (the same) | color_map | colour_map
+ *   | pigment_map | MAP_IDENT | quick_color COLOR | quick_colour COLOR
+ * Reads up to and including `end` into *pig (replaced or made private). */
+static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind end)
+{
 	const struct value *v = parse_ident_value(p);
 	if (v && v->kind == VAL_PIGMENT) {
 		pigment_unref(*pig);
 		*pig = pigment_ref(v->pig);
 		parse_advance(p);
 	}
-	while (!parse_is(p, TOK_RBRACE)) {
-		if (parse_starts_expression(p)) {
-			struct rgbft c = parse_color(p);
-			pigment_unref(*pig);
-			*pig = pigment_new();
-			(*pig)->color = c;
+	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
+	for (;;) {
+		if (in_object && parse_accept(p, TOK_RBRACE)) {
+			in_object = false;
 			continue;
 		}
-		struct xform t;
-		if (parse_transform_item(p, &t))
-			continue; /* a solid colour is the same everywhere */
-		parse_expected(p, "a color or a pigment modifier");
+		if (parse_accept(p, end))
+			break;
+		const struct token *t = parse_peek(p);
+		struct xform xf;
+		enum pattern_kind pk;
+		enum map_kind mk;
+		if (parse_transform_item(p, &xf)) {
+			*pig = pigment_transform(*pig, &xf);
+			continue;
+		}
+		if (at_pattern(p, &pk)) {
+			struct pigment *pg = own_pigment(pig);
+			blend_map_unref(pg->map);
+			pg->map = NULL;
+			pg->kind = PIGMENT_PATTERN;
+			parse_pattern_type(p, &pg->pat, BLK_PIGMENT);
+			in_object = pg->pat.kind == PAT_OBJECT;
+			continue;
+		}
+		if (t->kind == TOK_IDENT) {
+			v = parse_ident_value(p);
+			if (v->kind == VAL_MAP) {
+				struct pigment *pg = own_pigment(pig);
+				if (v->map->kind != MAP_COLOR && v->map->kind != MAP_PIGMENT)
+					parse_wrong_kind(p, v, "a color_map or pigment_map");
+				if (pattern_is_block(pg->pat.kind) || pg->pat.kind == PAT_NONE)
+					parse_error(p, "a map identifier needs a continuous pattern before it");
+				set_map(p, &pg->map, blend_map_ref(v->map));
+				parse_advance(p);
+				continue;
+			}
+			if (!val_is_numeric(v))
+				parse_wrong_kind(p, v, "a color or a map in a pigment");
+		}
+		if (parse_starts_expression(p)) {
+			struct pigment *pg = own_pigment(pig);
+			if (pg->kind == PIGMENT_SOLID) {
+				pg->color = parse_color(p);
+				continue;
+			}
+			if (!pattern_is_block(pg->pat.kind))
+				parse_error(p, "a color cannot follow the %s pattern: use a color_map", pattern_name(pg->pat.kind));
+			list_room(p, pg->map, &pg->pat, "colors or pigments");
+			if (pg->map && pg->map->kind != MAP_COLOR)
+				parse_error(p, "this %s list holds pigments: a color cannot be mixed in", pattern_name(pg->pat.kind));
+			struct rgbft c = parse_color(p);
+			parse_accept(p, TOK_COMMA);
+			list_entry(&pg->map, MAP_COLOR, &pg->pat)->color = c;
+			continue;
+		}
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a color, a pattern, a pigment modifier or '}'");
+		if (t->kw == KW_PIGMENT) {
+			struct pigment *pg = own_pigment(pig);
+			if (!pattern_is_block(pg->pat.kind))
+				parse_error(p, "a pigment inside a pigment must be an entry of a block pattern's list (checker, hexagon, brick, ...)");
+			list_room(p, pg->map, &pg->pat, "colors or pigments");
+			if (pg->map && pg->map->kind != MAP_PIGMENT)
+				parse_error(p, "this %s list holds colors: a pigment cannot be mixed in", pattern_name(pg->pat.kind));
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			struct pigment *item = read_pigment(p, NULL, TOK_RBRACE);
+			list_entry(&pg->map, MAP_PIGMENT, &pg->pat)->item = item;
+			parse_accept(p, TOK_COMMA);
+			continue;
+		}
+		if (is_map_kw((enum kw)t->kw, &mk) && (mk == MAP_COLOR || mk == MAP_PIGMENT)) {
+			struct pigment *pg = own_pigment(pig);
+			struct blend_map *m = block_map(p, mk, &pg->pat);
+			set_map(p, &pg->map, m);
+			continue;
+		}
+		switch (t->kw) {
+		case KW_QUICK_COLOR: case KW_QUICK_COLOUR: {
+			parse_advance(p);
+			struct rgbft c = parse_color(p);
+			struct pigment *pg = own_pigment(pig);
+			if (pg->kind != PIGMENT_SOLID)
+				pg->color = c; /* a solid colour keeps its own */
+			continue;
+		}
+		case KW_IMAGE_MAP: {
+			struct pigment *pg = own_pigment(pig);
+			blend_map_unref(pg->map);
+			pg->map = NULL;
+			pattern_clear(&pg->pat);
+			pg->pat = pattern_make(PAT_IMAGE);
+			pg->kind = PIGMENT_IMAGE;
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			parse_image_mapping(p, &pg->pat.img);
+			parse_expect(p, TOK_RBRACE);
+			continue;
+		}
+		default:
+			break;
+		}
+		if (parse_pattern_modifier(p, &own_pigment(pig)->pat))
+			continue;
+		parse_expected(p, "a color, a pattern, a pigment modifier or '}'");
 	}
+	struct pigment *pg = *pig;
+	if (pg->map && pattern_is_block(pg->pat.kind) && pg->map->n < pattern_block_entries(pg->pat.kind))
+		finish_list(p, own_pigment(pig)->map, &pg->pat);
+}
+
+/* pigment := pigment '{' pigment_body '}'
+ * Reads into *pig: a pigment identifier replaces it, other items modify
+ * it (made private first). */
+void parse_pigment(struct parser *p, struct pigment **pig)
+{
+	parse_advance(p); /* pigment */
+	parse_expect(p, TOK_LBRACE);
+	if (!*pig)
+		*pig = pigment_new();
+	pigment_body(p, pig, TOK_RBRACE);
+}
+
+/* ---- normal ---- */
+
+/* normal_body := [IDENT] [pattern_type [[','] AMOUNT]] { normal_modifier }
+ * normal_modifier := pattern_modifier | transformation | bump_size F
+ *   | accuracy F | normal_map | slope_map | MAP_IDENT | normal '{' '}' (a
+ *   block pattern's list) | bump_map '{' IMAGE { bump_size F } '}' */
+static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end)
+{
+	const struct value *v = parse_ident_value(p);
+	if (v) {
+		if (v->kind != VAL_NORMAL)
+			parse_wrong_kind(p, v, "a normal");
+		normal_unref(*nrm);
+		*nrm = normal_ref(v->nrm);
+		parse_advance(p);
+	}
+	own_normal(nrm);
+	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
+	for (;;) {
+		if (in_object && parse_accept(p, TOK_RBRACE)) {
+			in_object = false;
+			continue;
+		}
+		if (parse_accept(p, end))
+			break;
+		const struct token *t = parse_peek(p);
+		struct xform xf;
+		enum pattern_kind pk;
+		enum map_kind mk;
+		if (parse_transform_item(p, &xf)) {
+			*nrm = normal_transform(*nrm, &xf);
+			continue;
+		}
+		if (at_pattern(p, &pk)) {
+			struct normal *n = own_normal(nrm);
+			blend_map_unref(n->map);
+			n->map = NULL;
+			parse_pattern_type(p, &n->pat, BLK_NORMAL);
+			in_object = n->pat.kind == PAT_OBJECT;
+			/* The amount: `bumps 0.5`, `mandel 50, 0.3`, `spiral1 3, -0.5`. */
+			if (!in_object && (parse_accept(p, TOK_COMMA) || parse_starts_expression(p)))
+				n->amount = parse_float(p);
+			continue;
+		}
+		if (t->kind == TOK_IDENT) {
+			v = parse_ident_value(p);
+			if (v->kind != VAL_MAP)
+				parse_wrong_kind(p, v, "a normal_map or slope_map");
+			struct normal *n = own_normal(nrm);
+			if (v->map->kind != MAP_NORMAL && v->map->kind != MAP_SLOPE)
+				parse_wrong_kind(p, v, "a normal_map or slope_map");
+			set_map(p, &n->map, blend_map_ref(v->map));
+			parse_advance(p);
+			continue;
+		}
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a pattern, a normal modifier or '}'");
+		if (is_map_kw((enum kw)t->kw, &mk) && (mk == MAP_NORMAL || mk == MAP_SLOPE)) {
+			struct normal *n = own_normal(nrm);
+			set_map(p, &n->map, block_map(p, mk, &n->pat));
+			continue;
+		}
+		switch (t->kw) {
+		case KW_BUMP_SIZE: parse_advance(p); own_normal(nrm)->amount = parse_float(p); continue;
+		case KW_ACCURACY: parse_advance(p); own_normal(nrm)->accuracy = parse_float(p); continue;
+		case KW_NORMAL: {
+			struct normal *n = own_normal(nrm);
+			if (!pattern_is_block(n->pat.kind))
+				parse_error(p, "a normal inside a normal must be an entry of a block pattern's list (checker, hexagon, brick, ...)");
+			list_room(p, n->map, &n->pat, "normals");
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			struct normal *item = read_normal(p, NULL, TOK_RBRACE);
+			list_entry(&n->map, MAP_NORMAL, &n->pat)->item = item;
+			parse_accept(p, TOK_COMMA);
+			continue;
+		}
+		case KW_BUMP_MAP: {
+			struct normal *n = own_normal(nrm);
+			blend_map_unref(n->map);
+			n->map = NULL;
+			pattern_clear(&n->pat);
+			n->pat = pattern_make(PAT_IMAGE);
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			parse_image_mapping(p, &n->pat.img);
+			while (!parse_accept(p, TOK_RBRACE)) {
+				if (parse_accept_kw(p, KW_BUMP_SIZE))
+					n->amount = parse_float(p);
+				else
+					parse_expected(p, "a bump_map modifier or '}'");
+			}
+			continue;
+		}
+		default:
+			break;
+		}
+		if (parse_pattern_modifier(p, &own_normal(nrm)->pat))
+			continue;
+		parse_expected(p, "a pattern, a normal modifier or '}'");
+	}
+	struct normal *n = *nrm;
+	if (n->map && pattern_is_block(n->pat.kind) && n->map->n < pattern_block_entries(n->pat.kind))
+		finish_list(p, n->map, &n->pat);
+}
+
+/* normal := normal '{' normal_body '}' : replaces or modifies *nrm (NULL:
+ * none yet). */
+void parse_normal(struct parser *p, struct normal **nrm)
+{
+	parse_advance(p); /* normal */
+	parse_expect(p, TOK_LBRACE);
+	normal_body(p, nrm, TOK_RBRACE);
+}
+
+/* ---- maps ---- */
+
+/* color_entry := '[' F [','] COLOR ']' | '[' F [','] F [','] COLOR [','] COLOR ']'
+ * (the second, old form, is two entries). */
+static void color_entry(struct parser *p, struct blend_map *m, double value, int *cap)
+{
+	struct rgbft c;
+	double v2 = 0;
+	bool two = false;
+	if (parse_is_kw(p, KW_COLOR) || parse_is_kw(p, KW_COLOUR)) {
+		c = parse_color(p);
+	} else {
+		struct value e = parse_expression(p);
+		if (e.kind == VAL_FLOAT && !parse_is(p, TOK_RBRACKET)) {
+			two = true;
+			v2 = e.v[0];
+			parse_accept(p, TOK_COMMA);
+			c = parse_color(p);
+		} else {
+			c = value_color(p, &e);
+		}
+	}
+	if (m->n + (two ? 2 : 1) > *cap) {
+		*cap *= 2;
+		m->e = realloc(m->e, (size_t)*cap * sizeof *m->e);
+		if (!m->e) abort();
+	}
+	struct map_entry *e = &m->e[m->n++];
+	memset(e, 0, sizeof *e);
+	e->value = value;
+	e->color = c;
+	if (two) {
+		parse_accept(p, TOK_COMMA);
+		struct rgbft c2 = parse_color(p);
+		e = &m->e[m->n++];
+		memset(e, 0, sizeof *e);
+		e->value = v2;
+		e->color = c2;
+	}
+}
+
+/* layered := texture '{' texture_body '}' { texture '{' texture_body '}' }
+ * Several textures in a row: the last is the top layer. Reads up to `end`
+ * when `end` is not TOK_EOF. Returns the top layer (one reference). */
+static struct texture *read_layers(struct parser *p, struct texture *under, enum tok_kind end);
+
+/* map := MAP_KEYWORD '{' ( MAP_IDENT | { '[' entry ']' } ) '}'
+ * entry := F [','] (COLOR | PIGMENT_BODY | NORMAL_BODY | '<' H ',' S '>'
+ *   | TEXTURE_BODY); for the average
+ *   pattern the value (a weight) may be left out (1). At most 256 entries.
+ * Returns a new map (one reference). */
+static struct blend_map *parse_map(struct parser *p, enum map_kind kind, enum pattern_kind pk)
+{
+	const char *name = kw_names[parse_peek(p)->kw];
 	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	const struct value *v = parse_ident_value(p);
+	if (v) {
+		if (v->kind != VAL_MAP || v->map->kind != kind) {
+			char want[40];
+			snprintf(want, sizeof want, "a %s", map_kind_name(kind));
+			parse_wrong_kind(p, v, want);
+		}
+		struct blend_map *m = blend_map_ref(v->map);
+		parse_advance(p);
+		int slot = parse_own(p, m, free_map_cb);
+		parse_expect(p, TOK_RBRACE);
+		parse_release(p, slot);
+		return m;
+	}
+	int cap = 8;
+	struct blend_map *m = blend_map_new(kind, cap);
+	m->n = 0;
+	int slot = parse_own(p, m, free_map_cb);
+	while (parse_is(p, TOK_LBRACKET)) {
+		struct srcpos at = parse_peek(p)->pos;
+		if (m->n >= MAP_MAX_ENTRIES)
+			parse_error_at(p, at, "a %s has at most %d entries", name, MAP_MAX_ENTRIES);
+		parse_advance(p);
+		double value = 1;
+		bool weight_optional = pk == PAT_AVERAGE;
+		bool has_value = true;
+		if (weight_optional) {
+			const struct token *t = parse_peek(p);
+			if (t->kind == TOK_IDENT) {
+				const struct value *iv = parse_ident_value(p);
+				has_value = iv->kind == VAL_FLOAT;
+			} else {
+				has_value = parse_starts_expression(p) && kind != MAP_COLOR;
+			}
+		}
+		if (has_value) {
+			value = parse_float(p);
+			parse_accept(p, TOK_COMMA);
+		}
+		if (kind == MAP_COLOR) {
+			color_entry(p, m, value, &cap);
+			if (m->n > MAP_MAX_ENTRIES)
+				parse_error_at(p, at, "a %s has at most %d entries", name, MAP_MAX_ENTRIES);
+			parse_expect(p, TOK_RBRACKET);
+			continue;
+		}
+		if (m->n == cap) {
+			cap *= 2;
+			m->e = realloc(m->e, (size_t)cap * sizeof *m->e);
+			if (!m->e) abort();
+		}
+		struct map_entry *e = &m->e[m->n];
+		memset(e, 0, sizeof *e);
+		e->value = value;
+		switch (kind) {
+		case MAP_SLOPE: {
+			struct value sv = parse_expression(p);
+			if (!val_is_numeric(&sv))
+				parse_error_at(p, sv.pos, "expected a <height, slope> vector, found a %s", val_kind_name(sv.kind));
+			val_widen(&sv, 2);
+			e->slope[0] = sv.v[0];
+			e->slope[1] = sv.v[1];
+			m->n++;
+			parse_expect(p, TOK_RBRACKET);
+			break;
+		}
+		case MAP_PIGMENT: {
+			/* `[v]` alone is a hole: transparent. */
+			if (!parse_accept(p, TOK_RBRACKET))
+				e->item = read_pigment(p, NULL, TOK_RBRACKET);
+			m->n++;
+			break;
+		}
+		case MAP_NORMAL:
+			if (!parse_accept(p, TOK_RBRACKET))
+				e->item = read_normal(p, NULL, TOK_RBRACKET);
+			m->n++;
+			break;
+		case MAP_TEXTURE:
+			/* A texture body, as in POV-Ray: `[v texture { }]` is an
+			 * error there; a layered texture comes in as an identifier. */
+			e->item = read_texture(p, TOK_RBRACKET);
+			m->n++;
+			break;
+		case MAP_COLOR:
+			break;
+		}
+	}
+	if (m->n == 0)
+		parse_expected(p, "'[' and the map's first entry");
+	parse_expect(p, TOK_RBRACE);
+	parse_release(p, slot);
+	return m;
+}
+
+/* A map as a declared value: color_map, colour_map, pigment_map,
+ * normal_map, slope_map or texture_map at the current token. */
+struct blend_map *parse_map_value(struct parser *p)
+{
+	enum map_kind mk;
+	if (!is_map_kw((enum kw)parse_peek(p)->kw, &mk))
+		parse_expected(p, "a map");
+	return parse_map(p, mk, PAT_NONE);
+}
+
+/* ---- texture ---- */
+
+/* The texture for a `texture {` statement inside a plain texture item
+ * sequence: a texture identifier, or the default. */
+
+/* Apply a texture-level uv_mapping to what the texture holds. */
+static void texture_uv_mapping(struct texture **tex)
+{
+	struct texture *t = own_texture(tex);
+	if (t->kind != TEX_PLAIN) {
+		t->pat.uv_mapping = true;
+		return;
+	}
+	if (t->pigment) {
+		struct pigment *pg = own_pigment(&t->pigment);
+		pg->pat.uv_mapping = true;
+	}
+	if (t->normal)
+		own_normal(&t->normal)->pat.uv_mapping = true;
+}
+
+/* texture_body := [IDENT] { PNF_IDENT } { texture_item }
+ * texture_item := pigment | normal | finish | transformation | uv_mapping
+ *   | pattern_type { pattern_modifier | texture_map | MAP_IDENT
+ *                    | texture '{' '}' (a block pattern's list) }
+ *   | material_map '{' IMAGE { texture } '}'
+ *   | tiles texture '{' '}' tile2 texture '{' '}'
+ * Replaces *tex with what is read (a new reference). */
+static void texture_body(struct parser *p, struct texture **tex, enum tok_kind end)
+{
+	texture_unref(*tex);
+	*tex = NULL;
+	const struct value *v = parse_ident_value(p);
+	if (v && v->kind == VAL_TEXTURE) {
+		*tex = texture_ref(v->tex);
+		parse_advance(p);
+	} else {
+		/* A texture statement starts from the defaults, not from what
+		 * the object had. */
+		*tex = default_texture(p);
+	}
+	bool uv = false;
+	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
+	for (;;) {
+		if (in_object && parse_accept(p, TOK_RBRACE)) {
+			in_object = false;
+			continue;
+		}
+		if (parse_accept(p, end))
+			break;
+		const struct token *t = parse_peek(p);
+		struct xform xf;
+		enum pattern_kind pk;
+		enum map_kind mk;
+		if (parse_transform_item(p, &xf)) {
+			*tex = texture_transform(*tex, &xf);
+			continue;
+		}
+		if (t->kind == TOK_IDENT) {
+			/* pigment, normal and finish identifiers replace those parts. */
+			v = parse_ident_value(p);
+			struct texture *tx = own_texture(tex);
+			switch (v->kind) {
+			case VAL_PIGMENT: pigment_unref(tx->pigment); tx->pigment = pigment_ref(v->pig); break;
+			case VAL_NORMAL: normal_unref(tx->normal); tx->normal = normal_ref(v->nrm); break;
+			case VAL_FINISH: tx->finish = *v->fin; break;
+			case VAL_MAP:
+				if (v->map->kind != MAP_TEXTURE)
+					parse_wrong_kind(p, v, "a texture_map");
+				if (tx->kind != TEX_PATTERNED || pattern_is_block(tx->pat.kind))
+					parse_error(p, "a texture_map identifier needs a continuous pattern before it");
+				set_map(p, &tx->map, blend_map_ref(v->map));
+				break;
+			default: parse_wrong_kind(p, v, "a texture, pigment, normal, finish or texture_map");
+			}
+			parse_advance(p);
+			continue;
+		}
+		if (at_pattern(p, &pk)) {
+			struct texture *tx = own_texture(tex);
+			blend_map_unref(tx->map);
+			tx->map = NULL;
+			tx->kind = TEX_PATTERNED;
+			parse_pattern_type(p, &tx->pat, BLK_TEXTURE);
+			in_object = tx->pat.kind == PAT_OBJECT;
+			continue;
+		}
+		if (t->kind != TOK_KEYWORD)
+			parse_expected(p, "a texture item or '}'");
+		if (is_map_kw((enum kw)t->kw, &mk) && mk == MAP_TEXTURE) {
+			struct texture *tx = own_texture(tex);
+			if (tx->kind != TEX_PATTERNED)
+				parse_error(p, "a texture_map needs a pattern before it");
+			set_map(p, &tx->map, block_map(p, mk, &tx->pat));
+			continue;
+		}
+		switch (t->kw) {
+		case KW_PIGMENT: case KW_NORMAL: case KW_FINISH: {
+			struct texture *tx = own_texture(tex);
+			if (tx->kind != TEX_PLAIN)
+				parse_error(p, "a patterned texture takes its %s from its textures, not directly", kw_names[t->kw]);
+			if (t->kw == KW_PIGMENT)
+				parse_pigment(p, &tx->pigment);
+			else if (t->kw == KW_NORMAL)
+				parse_normal(p, &tx->normal);
+			else
+				parse_finish(p, &tx->finish);
+			continue;
+		}
+		case KW_TEXTURE: {
+			struct texture *tx = own_texture(tex);
+			if (tx->kind != TEX_PATTERNED || !pattern_is_block(tx->pat.kind))
+				parse_error(p, "a texture inside a texture must be an entry of a block pattern's list (checker, hexagon, brick, ...)");
+			list_room(p, tx->map, &tx->pat, "textures");
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			struct texture *item = read_texture(p, TOK_RBRACE);
+			list_entry(&tx->map, MAP_TEXTURE, &tx->pat)->item = item;
+			parse_accept(p, TOK_COMMA);
+			continue;
+		}
+		case KW_TILES: {
+			/* The old form of `checker texture {A} texture {B}`. */
+			parse_advance(p);
+			struct texture *tx = own_texture(tex);
+			blend_map_unref(tx->map);
+			pattern_clear(&tx->pat);
+			tx->pat = pattern_make(PAT_CHECKER);
+			tx->kind = TEX_PATTERNED;
+			tx->map = blend_map_new(MAP_TEXTURE, 2);
+			tx->map->n = 0;
+			for (int i = 0; i < 2; i++) {
+				if (i == 1 && !parse_accept_kw(p, KW_TILE2))
+					parse_expected(p, "tile2");
+				if (!parse_is_kw(p, KW_TEXTURE))
+					parse_expected(p, "a texture");
+				struct texture *item = read_layers(p, NULL, TOK_EOF);
+				list_entry(&tx->map, MAP_TEXTURE, &tx->pat)->item = item;
+			}
+			continue;
+		}
+		case KW_MATERIAL_MAP: {
+			struct texture *tx = own_texture(tex);
+			blend_map_unref(tx->map);
+			tx->map = NULL;
+			pattern_clear(&tx->pat);
+			tx->pat = pattern_make(PAT_IMAGE);
+			tx->kind = TEX_MATERIAL;
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			parse_image_mapping(p, &tx->pat.img);
+			int cap = 4;
+			tx->map = blend_map_new(MAP_TEXTURE, cap);
+			tx->map->n = 0;
+			while (!parse_accept(p, TOK_RBRACE)) {
+				if (parse_transform_item(p, &xf)) {
+					pattern_transform(&tx->pat, &xf);
+					continue;
+				}
+				if (!parse_is_kw(p, KW_TEXTURE))
+					parse_expected(p, "a texture, a transformation or '}' in the material_map");
+				if (tx->map->n >= MAP_MAX_ENTRIES)
+					parse_error(p, "a material_map has at most %d textures", MAP_MAX_ENTRIES);
+				if (tx->map->n == cap) {
+					cap *= 2;
+					tx->map->e = realloc(tx->map->e, (size_t)cap * sizeof *tx->map->e);
+					if (!tx->map->e) abort();
+				}
+				struct map_entry *e = &tx->map->e[tx->map->n];
+				memset(e, 0, sizeof *e);
+				e->value = tx->map->n;
+				parse_advance(p);
+				parse_expect(p, TOK_LBRACE);
+				e->item = read_texture(p, TOK_RBRACE);
+				tx->map->n++;
+			}
+			if (tx->map->n == 0)
+				parse_error(p, "a material_map needs at least one texture");
+			continue;
+		}
+		case KW_UV_MAPPING:
+			parse_advance(p);
+			uv = true;
+			continue;
+		default:
+			break;
+		}
+		if ((*tex)->kind != TEX_PLAIN && parse_pattern_modifier(p, &own_texture(tex)->pat))
+			continue;
+		parse_expected(p, "pigment, normal, finish, a pattern, a transformation or '}'");
+	}
+	struct texture *tx = *tex;
+	if (tx->kind == TEX_PATTERNED && tx->map && pattern_is_block(tx->pat.kind) &&
+	    tx->map->n < pattern_block_entries(tx->pat.kind))
+		finish_list(p, own_texture(tex)->map, &tx->pat);
+	if (uv)
+		texture_uv_mapping(tex);
+}
+
+/* A copy of the layers of top (each layer copied) with under below the
+ * last one. Takes the reference to top and to under. */
+struct texture *parse_layer_onto(struct texture *top, struct texture *under)
+{
+	if (!under)
+		return top;
+	struct texture *c = own_texture(&top);
+	struct texture *cur = c;
+	while (cur->next) {
+		struct texture *n = cur->next;
+		if (n->refs > 1) {
+			cur->next = texture_copy(n);
+			texture_unref(n);
+		}
+		cur = cur->next;
+	}
+	cur->next = under;
+	return c;
+}
+
+static struct texture *read_layers(struct parser *p, struct texture *under, enum tok_kind end)
+{
+	struct texture **h = holder_new(sizeof *h);
+	*h = under;
+	int slot = parse_own(p, h, parse_free_texture_holder);
+	do {
+		parse_advance(p); /* texture */
+		parse_expect(p, TOK_LBRACE);
+		struct texture *t = read_texture(p, TOK_RBRACE);
+		*h = parse_layer_onto(t, *h);
+	} while (end != TOK_EOF ? parse_is_kw(p, KW_TEXTURE) : false);
+	if (end != TOK_EOF)
+		parse_expect(p, end);
+	struct texture *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
 }
 
 struct texture *parse_private_texture(struct parser *p, struct texture **tex)
 {
 	if (!*tex)
-		*tex = p->default_tex ? texture_copy(p->default_tex) : texture_new();
-	else if ((*tex)->refs > 1) {
-		struct texture *c = texture_copy(*tex);
-		texture_unref(*tex);
-		*tex = c;
-	}
+		*tex = default_texture(p);
+	else
+		own_texture(tex);
 	return *tex;
 }
 
-/* texture := texture '{' [IDENT] { pigment | finish | transform } '}'
- * Reads into *tex (created or made private as needed). */
+/* texture := texture '{' texture_body '}'
+ * Replaces *tex. */
 void parse_texture(struct parser *p, struct texture **tex)
 {
 	parse_advance(p); /* texture */
 	parse_expect(p, TOK_LBRACE);
+	texture_body(p, tex, TOK_RBRACE);
+}
+
+/* layered_texture := texture { texture }: a texture statement layered on
+ * top of what *tex holds (NULL: nothing yet), as several texture
+ * statements on one object are in POV-Ray. */
+void parse_texture_layer(struct parser *p, struct texture **tex)
+{
+	if (*tex && (*tex)->kind != TEX_PLAIN)
+		parse_error(p, "cannot layer a texture over a patterned texture");
+	struct texture *t = NULL;
+	struct texture **h = holder_new(sizeof *h);
+	int slot = parse_own(p, h, parse_free_texture_holder);
+	parse_texture(p, h);
+	t = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	*tex = parse_layer_onto(t, *tex);
+}
+
+/* A texture value for #declare: texture { } { texture { } } (layered when
+ * several follow). The caller owns the result. */
+struct texture *parse_texture_value(struct parser *p)
+{
+	struct texture **h = holder_new(sizeof *h);
+	int slot = parse_own(p, h, parse_free_texture_holder);
+	do
+		parse_texture_layer(p, h);
+	while (parse_peek_cont(p)->kind == TOK_KEYWORD && parse_peek_cont(p)->kw == KW_TEXTURE);
+	struct texture *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
+/* ---- material ---- */
+
+/* material := material '{' [IDENT] { texture | interior | transformation } '}'
+ * Fills *m (tex and interior: references, replaced). Transformations move
+ * the textures read so far, as on an object. */
+void parse_material(struct parser *p, struct material *m)
+{
+	parse_advance(p); /* material */
+	parse_expect(p, TOK_LBRACE);
 	const struct value *v = parse_ident_value(p);
 	if (v) {
-		if (v->kind != VAL_TEXTURE)
-			parse_wrong_kind(p, v, "a texture");
-		texture_unref(*tex);
-		*tex = texture_ref(v->tex);
+		if (v->kind != VAL_MATERIAL)
+			parse_wrong_kind(p, v, "a material");
+		texture_unref(m->tex);
+		interior_unref(m->interior);
+		m->tex = texture_ref(v->mat->tex);
+		m->interior = interior_ref(v->mat->interior);
 		parse_advance(p);
-	} else {
-		/* A texture statement starts from the defaults, not from what the
-		 * object had. */
-		texture_unref(*tex);
-		*tex = p->default_tex ? texture_copy(p->default_tex) : texture_new();
 	}
 	while (!parse_accept(p, TOK_RBRACE)) {
-		struct xform t;
-		if (parse_is_kw(p, KW_PIGMENT))
-			parse_pigment(p, &parse_private_texture(p, tex)->pigment);
-		else if (parse_is_kw(p, KW_FINISH))
-			parse_finish(p, &parse_private_texture(p, tex)->finish);
-		else if (!parse_transform_item(p, &t))
-			parse_expected(p, "pigment, finish, a transformation or '}'");
+		struct xform xf;
+		if (parse_transform_item(p, &xf)) {
+			if (m->tex)
+				m->tex = texture_transform(m->tex, &xf);
+			continue;
+		}
+		if (parse_is_kw(p, KW_TEXTURE))
+			parse_texture_layer(p, &m->tex);
+		else if (parse_is_kw(p, KW_INTERIOR))
+			parse_interior(p, &m->interior);
+		else
+			parse_expected(p, "texture, interior, a transformation or '}' in the material");
 	}
 }
 
 /* ---- #default ---- */
 
-/* #default '{' { texture | pigment | finish } '}' : what objects without
- * their own get from now on. */
+/* #default '{' { texture | pigment | normal | finish } '}' : what objects
+ * without their own get from now on. */
 void parse_default(struct parser *p)
 {
 	parse_expect(p, TOK_LBRACE);
@@ -88,10 +1537,11 @@ void parse_default(struct parser *p)
 			parse_texture(p, &p->default_tex);
 		else if (parse_is_kw(p, KW_PIGMENT))
 			parse_pigment(p, &parse_private_texture(p, &p->default_tex)->pigment);
+		else if (parse_is_kw(p, KW_NORMAL))
+			parse_normal(p, &parse_private_texture(p, &p->default_tex)->normal);
 		else if (parse_is_kw(p, KW_FINISH))
 			parse_finish(p, &parse_private_texture(p, &p->default_tex)->finish);
 		else
-			parse_expected(p, "texture, pigment, finish or '}' in #default");
+			parse_expected(p, "texture, pigment, normal, finish or '}' in #default");
 	}
 }
-

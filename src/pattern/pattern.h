@@ -67,6 +67,7 @@ enum pattern_op_kind {
 	POP_SPHERICAL,     /* warp { spherical orientation V dist_exp F } */
 	POP_TOROIDAL,      /* warp { toroidal orientation V dist_exp F major_radius F } */
 	POP_PLANAR,        /* warp { planar V, offset } */
+	POP_CUBIC,         /* warp { cubic } */
 };
 
 /* One warp or transformation, in declaration order. */
@@ -85,6 +86,7 @@ struct fractal {
 	int iterations;
 	int exponent;                /* 2..33 */
 	int magnet_type;             /* magnet: 1 or 2 */
+	bool julia;                  /* magnet: the julia form (c is its constant), not mandel */
 	double c[2];                 /* julia: the complex constant */
 	int interior_type, exterior_type;
 	double interior_factor, exterior_factor;
@@ -113,9 +115,9 @@ struct pattern {
 	/* parameters of the kind (unused ones are zero) */
 	vec3 vec;                    /* gradient direction; brick size; slope direction; facets: (size, coords, 0) */
 	vec3 vec2;                   /* brick: (mortar, 0, 0); slope: altitude direction */
-	double f[6];                 /* agate_turb; crackle metric/offset; quilted control0/1; slope low/high, alt low/high */
+	double f[6];                 /* agate_turb; crackle metric/offset; facets metric; quilted control0/1; slope low/high, alt low/high */
 	vec3 form;                   /* crackle form */
-	int n[4];                    /* spiral arms; tiling type; pavement sides/tiles/pattern/exterior/interior/form; crackle solid */
+	int n[6];                    /* spiral arms; tiling type; pavement sides/tiles/pattern/exterior/interior/form; crackle solid */
 	struct fractal fractal;
 	struct fn *fn;               /* PAT_FUNCTION: one reference; called with (x, y, z) */
 	struct object *obj;          /* PAT_OBJECT: owned, prepared when the pattern is */

@@ -1,6 +1,8 @@
 /* fn.c: the user-function stack machine (see fn.h). */
 #include "scene/fn.h"
 
+#include "scene/texture.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -28,6 +30,11 @@ void fn_unref(struct fn *f)
 		fn_unref(f->callees[i]);
 	free(f->callees);
 	free(f->code);
+	if (f->pat) {
+		pattern_clear(f->pat);
+		free(f->pat);
+	}
+	pigment_unref(f->pig);
 	free(f);
 }
 
@@ -124,7 +131,34 @@ double fn_eval(const struct fn *f, const double *args)
 				pc = in->i - 1;
 			break;
 		case FN_JMP: pc = in->i - 1; break;
+		case FN_PATTERN: {
+			/* Parse-time and isosurface calls have no surface: no normal,
+			 * no ray; the global noise generator's default. */
+			struct pattern_ctx ctx = {.p = {st[sp - 3], st[sp - 2], st[sp - 1]}, .noise_generator = 2};
+			sp -= 3;
+			st[sp++] = pattern_value(in->pat, &ctx);
+			break;
+		}
+		case FN_PIGMENT: {
+			struct pattern_ctx ctx = {.p = {st[sp - 3], st[sp - 2], st[sp - 1]}, .noise_generator = 2};
+			sp -= 3;
+			struct rgbft c = pigment_eval(in->pig, &ctx);
+			double comp[6] = {c.r, c.g, c.b, c.f, c.t, 0.297 * c.r + 0.589 * c.g + 0.114 * c.b};
+			st[sp++] = comp[in->i];
+			break;
+		}
 		}
 	}
 	return sp > 0 ? st[sp - 1] : 0;
+}
+
+void fn_eval_color(const struct fn *f, const double *args, double out[5])
+{
+	struct pattern_ctx ctx = {.p = {args[0], args[1], args[2]}, .noise_generator = 2};
+	struct rgbft c = pigment_eval(f->pig, &ctx);
+	out[0] = c.r;
+	out[1] = c.g;
+	out[2] = c.b;
+	out[3] = c.f;
+	out[4] = c.t;
 }

@@ -23,9 +23,13 @@ enum fn_op {
 	FN_PROD,     /* the same, multiplied */
 	FN_JZ,       /* pop; if zero, jump to instruction i */
 	FN_JMP,      /* jump to instruction i */
+	FN_PATTERN,  /* pop z, y, x; push the value of pattern pat at (x, y, z) */
+	FN_PIGMENT,  /* pop z, y, x; push component i (0..4 red..transmit, 5 gray) of pigment pig there */
 };
 
 struct fn;
+struct pattern;
+struct pigment;
 
 struct fn_instr {
 	uint8_t op;
@@ -35,6 +39,8 @@ struct fn_instr {
 		double (*f1)(double);
 		double (*f2)(double, double);
 		const struct fn *fn;     /* FN_USER: a reference held by the owner */
+		const struct pattern *pat; /* FN_PATTERN: held by the function that owns it */
+		const struct pigment *pig; /* FN_PIGMENT: the same */
 	};
 };
 
@@ -48,6 +54,9 @@ struct fn {
 	int depth;                   /* the deepest stack the code reaches */
 	struct fn **callees;         /* functions it calls, one reference each */
 	int ncallees;
+	struct pattern *pat;         /* function { pattern { } }: owned */
+	struct pigment *pig;         /* function { pigment { } }: one reference; the
+	                              * function is colour-valued (fn_eval_color) */
 };
 
 struct fn *fn_new(int nparams);
@@ -55,8 +64,12 @@ struct fn *fn_ref(struct fn *f);
 void fn_unref(struct fn *f);
 /* Append an instruction; returns its index. */
 int fn_emit(struct fn *f, struct fn_instr in);
-/* Evaluate f with args[0..nparams). */
+/* Evaluate f with args[0..nparams). A colour-valued function (pig set)
+ * gives its red component. */
 double fn_eval(const struct fn *f, const double *args);
+/* A colour-valued function's colour at args (x, y, z): red, green, blue,
+ * filter, transmit. */
+void fn_eval_color(const struct fn *f, const double *args, double out[5]);
 /* An internal function of POV-Ray's numbering (function { internal(N) }):
  * its value at args (nargs values), or NaN if N is unknown. */
 double fn_internal(int n, const double *args, int nargs);

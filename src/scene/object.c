@@ -41,6 +41,18 @@ void object_transform(struct object *o, const struct xform *t)
 		object_transform(o->bound, t);
 }
 
+void object_transform_textures(struct object *o, const struct xform *t)
+{
+	if (o->tex)
+		o->tex = texture_transform(o->tex, t);
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			object_transform_textures(kids[i], t);
+	}
+}
+
 void object_set_flags(struct object *o, unsigned flags)
 {
 	o->flags |= flags;
@@ -61,6 +73,20 @@ void object_fill_texture(struct object *o, struct texture *t)
 			object_fill_texture(kids[i], t);
 	} else if (!o->tex) {
 		o->tex = texture_ref(t);
+	}
+}
+
+void object_fill_interior(struct object *o, struct interior *in)
+{
+	struct object **kids;
+	if (!o->ops->children)
+		return;
+	size_t n = o->ops->children(o, &kids);
+	for (size_t i = 0; i < n; i++) {
+		if (kids[i]->ops->children)
+			object_fill_interior(kids[i], in);
+		else if (!kids[i]->interior)
+			kids[i]->interior = interior_ref(in);
 	}
 }
 

@@ -88,11 +88,17 @@ void object_init(struct object *o, const struct object_ops *ops, struct srcpos p
 /* Apply a transform after the object's current one (to a CSG's children,
  * and to clipped_by and bounded_by objects). */
 void object_transform(struct object *o, const struct xform *t);
+/* Apply t to the textures o and its descendants already have (an
+ * object's transformation moves the textures given before it). */
+void object_transform_textures(struct object *o, const struct xform *t);
 /* Set flags on o and, for CSG, on every descendant. */
 void object_set_flags(struct object *o, unsigned flags);
 /* Give t (a new reference each) to o, or for CSG to every descendant
  * that has no texture yet. */
 void object_fill_texture(struct object *o, struct texture *t);
+/* Give in (a new reference each) to the descendants of a CSG that have no
+ * interior yet. */
+void object_fill_interior(struct object *o, struct interior *in);
 /* Prepare o and everything below it: world bounds in o->bounds, CSG
  * hierarchies. Call after the last transform. */
 void object_prepare(struct object *o);

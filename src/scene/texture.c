@@ -271,8 +271,6 @@ static struct blend_map *map_unshare(struct blend_map **mp)
 	return c;
 }
 
-static struct pigment *pigment_transform(struct pigment *p, const struct xform *xf);
-static struct normal *normal_transform(struct normal *n, const struct xform *xf);
 
 /* Transform every item of a pigment, normal or texture map (the items'
  * own patterns move with the outer one, as in POV-Ray). */
@@ -294,7 +292,7 @@ static void map_transform(struct blend_map **mp, const struct xform *xf)
 	}
 }
 
-static struct pigment *pigment_transform(struct pigment *p, const struct xform *xf)
+struct pigment *pigment_transform(struct pigment *p, const struct xform *xf)
 {
 	if (p->kind == PIGMENT_SOLID)
 		return p;
@@ -308,7 +306,7 @@ static struct pigment *pigment_transform(struct pigment *p, const struct xform *
 	return p;
 }
 
-static struct normal *normal_transform(struct normal *n, const struct xform *xf)
+struct normal *normal_transform(struct normal *n, const struct xform *xf)
 {
 	if (n->refs > 1) {
 		struct normal *c = normal_copy(n);

@@ -157,6 +157,10 @@ struct texture *texture_copy(const struct texture *t);
  * reaching its texture), copying what is shared. Returns t or its copy;
  * the reference to t passes to the result. */
 struct texture *texture_transform(struct texture *t, const struct xform *xf);
+/* The same for a pigment and a normal (their patterns and map items);
+ * the reference passes to the result. */
+struct pigment *pigment_transform(struct pigment *p, const struct xform *xf);
+struct normal *normal_transform(struct normal *n, const struct xform *xf);
 /* Prepare every pattern in t (object patterns' bounds). */
 void texture_prepare(struct texture *t);
 
