@@ -143,6 +143,7 @@ struct pattern_ctx {
 	vec3 normal;                 /* unit surface normal, world space (slope, aoi, facets) */
 	vec3 dir;                    /* unit ray direction (aoi) */
 	int noise_generator;         /* global_settings { noise_generator }: 1..3 (default 2) */
+	int number_of_waves;         /* global_settings { number_of_waves }: 0 means the default, 10 */
 };
 
 /* A pattern of kind k with POV-Ray's defaults for its modifiers. */
@@ -161,6 +162,9 @@ void pattern_prepare(struct pattern *pt);
 
 /* The point in pattern space: ctx->p carried through the ops. */
 vec3 pattern_point(const struct pattern *pt, vec3 p);
+/* The same with the scene's noise generator (ctx->noise_generator) for
+ * the turbulence warps, where the pattern has none of its own. */
+vec3 pattern_point_ctx(const struct pattern *pt, vec3 p, const struct pattern_ctx *ctx);
 /* The pattern's value at ctx: an index for block patterns, [0, 1] for the
  * others (after frequency, phase and wave type). */
 double pattern_value(const struct pattern *pt, const struct pattern_ctx *ctx);

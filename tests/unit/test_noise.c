@@ -1,0 +1,374 @@
+/* test_noise.c: POV-Ray's noise, turbulence, warps and noise patterns.
+ *
+ * Expected values were printed by POV-Ray 3.7.0.10 with
+ *   #declare F = function { pattern { bozo noise_generator 2 } }
+ *   #debug concat(str(F(x, y, z), 0, 10), "\n")
+ * (and likewise for the other patterns and for warps applied to
+ * `function { x*0.001+0.5 }`), unless a comment says otherwise. POV-Ray
+ * prints 10 decimals; generators 1 and 2 and the patterns built on them are
+ * expected to 1e-9. Generator 3, agate, ripples, waves, crackle and cells
+ * use random tables of our own, so only their character is tested. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "math/vec.h"
+#include "pattern/kinds.h"
+#include "testutil.h"
+
+#include <math.h>
+#include <string.h>
+
+#define TOL 1e-9
+
+static void test_noise_generators_1_2(void **state)
+{
+	(void)state;
+	/* along the x axis: the lattice values and the cubic blend between */
+	assert_near(noise3(v3(0.0, 0, 0), 1), 0.0565805000, TOL);
+	assert_near(noise3(v3(0.3, 0, 0), 1), 0.2494429304, TOL);
+	assert_near(noise3(v3(1.5, 0, 0), 1), 0.4171970000, TOL);
+	assert_near(noise3(v3(0.3, 0, 0), 2), 0.3927972233, TOL);
+	assert_near(noise3(v3(1.9, 0, 0), 2), 0.3847723868, TOL);
+	assert_near(noise3(v3(0.3, 0.7, 1.1), 2), 0.6895852173, TOL);
+	/* negative coordinates */
+	assert_near(noise3(v3(-0.3, 0.7, 1.1), 2), 0.6716474278, TOL);
+	assert_near(noise3(v3(-0.3, 0, 0), 2), 0.2886817582, TOL);
+	assert_near(noise3(v3(-1, 0, 0), 2), 0.5583232129, TOL);
+	/* POV-Ray's period is 4096 on each axis, not 2048 */
+	assert_near(noise3(v3(0.3 + 2048, 0.7, 1.1), 2), 0.5320568961, TOL);
+	assert_near(noise3(v3(0.3 + 4096, 0.7, 1.1), 2), 0.6895852173, TOL);
+	assert_near(noise3(v3(0.3, 0.7 + 4096, 1.1), 2), 0.6895852173, TOL);
+}
+
+static void test_noise_generator1_clips(void **state)
+{
+	(void)state;
+	/* generator 2 is generator 1's unclipped sum mapped linearly: where
+	 * generator 1 is inside (0, 1), g2 = (g1 + 0.55242) × 0.48985582 */
+	int clipped = 0;
+	for (int i = 0; i < 2000; i++) {
+		vec3 p = v3(i * 0.731, i * 0.377 - 300, 50 - i * 0.113);
+		double a = noise3(p, 1), b = noise3(p, 2);
+		assert_true(a >= 0 && a <= 1);
+		if (a > 0 && a < 1)
+			assert_near(b, (a + 0.55242) * 0.48985582, 1e-12);
+		else
+			clipped++;
+	}
+	assert_true(clipped > 0);
+}
+
+static void stats(int gen, double *mean, double *sd, double *lo, double *hi)
+{
+	double s = 0, s2 = 0;
+	*lo = 1, *hi = 0;
+	int n = 0;
+	for (int i = 0; i < 40; i++)
+		for (int j = 0; j < 40; j++)
+			for (int k = 0; k < 10; k++, n++) {
+				double v = noise3(v3(i * 0.37 + 0.01, j * 0.41 - 7, k * 1.13 + 3), gen);
+				s += v;
+				s2 += v * v;
+				if (v < *lo) *lo = v;
+				if (v > *hi) *hi = v;
+			}
+	*mean = s / n;
+	*sd = sqrt(s2 / n - *mean * *mean);
+}
+
+static void test_noise_character(void **state)
+{
+	(void)state;
+	double mean, sd, lo, hi;
+	/* POV-Ray over 20000 random points: gen 2 mean 0.506, sd 0.126, range
+	 * [0.062, 0.922]; gen 3 mean 0.493, sd 0.146, range [0.013, 1] */
+	stats(2, &mean, &sd, &lo, &hi);
+	assert_near(mean, 0.506, 0.02);
+	assert_near(sd, 0.126, 0.015);
+	assert_true(lo > 0.05 && hi < 0.93);
+	stats(3, &mean, &sd, &lo, &hi);
+	assert_near(mean, 0.493, 0.03);
+	assert_near(sd, 0.146, 0.03);
+	/* generator 3 is a gradient noise: 0.4925 on its (shifted) lattice */
+	double s = 0.0231572128;
+	assert_near(noise3(v3(3 - s, 2 - s, 5 - s), 3), 0.4925, 1e-12);
+	assert_near(noise3(v3(-7 - s, 11 - s, -s), 3), 0.4925, 1e-12);
+	/* and it is deterministic */
+	assert_true(noise3(v3(0.3, 0.2, 0.1), 3) == noise3(v3(0.3, 0.2, 0.1), 3));
+}
+
+static void test_dnoise_and_turbulence(void **state)
+{
+	(void)state;
+	/* warp { turbulence <0.1,0,0> octaves N } on function { x }, per
+	 * component: the displacement divided by 0.1 */
+	vec3 p = v3(-1.990242680949, -0.996345184608, 3.009379843240);
+	assert_vec_near(dnoise3(p, 2), 0.4426424207, -0.1434270707, -0.1205449565, 1e-9);
+	struct turbulence t = {{1, 1, 1}, 2, 0.5, 2.0};
+	assert_vec_near(turbulence3(p, &t, 2), 0.5253990638, -0.0010913183, 0.0879994338, 1e-9);
+	t.octaves = 6;
+	assert_vec_near(turbulence3(p, &t, 2), 0.4194913577, 0.0636297279, -0.0830283625, 1e-9);
+	/* omega in single precision: omega 0.7 lambda 3 octaves 3 */
+	t.octaves = 3;
+	t.omega = 0.7;
+	t.lambda = 3;
+	assert_vec_near(turbulence3(p, &t, 2), 0.8004039309, -0.6071260011, -0.3034148273, 1e-9);
+	/* the x component of dnoise is the generator-1 sum less 0.5 */
+	assert_near(dnoise3(v3(0.3, 0, 0), 2).x, 0.2494429304 - 0.5, 1e-9);
+}
+
+static struct pattern_ctx ctx_at(vec3 p)
+{
+	struct pattern_ctx c;
+	memset(&c, 0, sizeof c);
+	c.p = p;
+	return c;
+}
+
+static double raw_at(const struct pattern *pt, vec3 p)
+{
+	struct pattern_ctx c = ctx_at(p);
+	return pattern_raw(pt, pattern_point_ctx(pt, p, &c), &c);
+}
+
+/* POV-Ray's ramp wave as measured: fmod(v, 1.00001), negatives + 1. */
+static double ramp(double v)
+{
+	v = fmod(v, 1.00001);
+	return v < 0 ? v + 1 : v;
+}
+
+static void test_patterns_measured(void **state)
+{
+	(void)state;
+	vec3 pts[3] = {v3(0.3, 0.7, 1.1), v3(-2.2, 1.35, 0.45), v3(3.7, -0.6, -1.9)};
+	static const double granite[3] = {0.2445870639, 0.6117536314, 0.2969118697};
+	static const double wrinkles[3] = {0.6968290582, 0.4111624061, 0.3355924566};
+	static const double dents[3] = {0.3279169219, 0.1039256014, 0.0440952098};
+	static const double marble_t[3] = {0.9915571006, 0.2030310237, 0.0270740521};
+	static const double bozo_t[3] = {0.5280888525, 0.6656790722, 0.3079296780};
+	struct pattern g = pattern_make(PAT_GRANITE), w = pattern_make(PAT_WRINKLES);
+	struct pattern d = pattern_make(PAT_DENTS), m = pattern_make(PAT_MARBLE);
+	struct pattern b = pattern_make(PAT_BOZO);
+	m.has_turbulence = true;                /* marble turbulence 0.5 ramp_wave */
+	m.turb.amount = v3(0.5, 0.5, 0.5);
+	b.has_turbulence = true;                /* bozo turbulence 0.7 octaves 4 */
+	b.turb.amount = v3(0.7, 0.7, 0.7);
+	b.turb.octaves = 4;
+	for (int i = 0; i < 3; i++) {
+		assert_near(ramp(raw_at(&g, pts[i])), granite[i], TOL);
+		assert_near(ramp(raw_at(&w, pts[i])), wrinkles[i], TOL);
+		assert_near(raw_at(&d, pts[i]), dents[i], TOL);
+		assert_near(ramp(raw_at(&m, pts[i])), marble_t[i], TOL);
+		assert_near(raw_at(&b, pts[i]), bozo_t[i], TOL);
+	}
+	/* marble and wood without turbulence: x and the distance from the z axis */
+	m.has_turbulence = false;
+	assert_near(raw_at(&m, v3(2.654702, 1.439391, 2.53395)), 2.654702, 1e-12);
+	struct pattern wd = pattern_make(PAT_WOOD);
+	assert_near(raw_at(&wd, v3(3, 4, 9)), 5, 1e-12);
+}
+
+static vec3 warp1(const struct pattern_op *op, vec3 p)
+{
+	struct pattern pt = pattern_make(PAT_BOZO);
+	pattern_add_op(&pt, op);
+	vec3 q = pattern_point(&pt, p);
+	pattern_clear(&pt);
+	return q;
+}
+
+static struct pattern_op op_of(enum pattern_op_kind k)
+{
+	struct pattern_op op;
+	memset(&op, 0, sizeof op);
+	op.kind = k;
+	return op;
+}
+
+static void test_warp_repeat(void **state)
+{
+	(void)state;
+	/* repeat 2*x offset <0,0.3,0.1> flip <1,1,0> */
+	struct pattern_op op = op_of(POP_REPEAT);
+	op.v1 = v3(2, 0, 0);
+	op.v2 = v3(0, 0.3, 0.1);
+	op.v3 = v3(1, 1, 0);
+	assert_vec_near(warp1(&op, v3(-4.3, 0.2, 0.7)), 0.3, -1.1, 0.4, 1e-12);
+	assert_vec_near(warp1(&op, v3(-2.5, 0.3, -0.2)), 1.5, -0.3, -0.4, 1e-12);
+	assert_vec_near(warp1(&op, v3(2.1, 0.7, 0.25)), 1.9, -0.4, 0.35, 1e-12);
+	assert_vec_near(warp1(&op, v3(2.0, 0.1, 0.1)), 2.0, 0.2, 0.2, 1e-12);
+	assert_vec_near(warp1(&op, v3(0.5, 0.5, 0.3)), 0.5, 0.5, 0.3, 1e-12);
+	/* repeat -2*x flip x: a negative width */
+	op = op_of(POP_REPEAT);
+	op.v1 = v3(-2, 0, 0);
+	op.v3 = v3(1, 0, 0);
+	assert_vec_near(warp1(&op, v3(-2.5, 0.3, -0.2)), -1.5, 0.3, -0.2, 1e-12);
+	assert_vec_near(warp1(&op, v3(0.5, 0.5, 0.3)), -0.5, 0.5, 0.3, 1e-12);
+	/* repeat <0,0,1.5> flip <0,1,1> offset <0.1,0.1,0.1> */
+	op = op_of(POP_REPEAT);
+	op.v1 = v3(0, 0, 1.5);
+	op.v2 = v3(0.1, 0.1, 0.1);
+	op.v3 = v3(0, 1, 1);
+	assert_vec_near(warp1(&op, v3(-2.5, 0.3, -0.2)), -2.6, -0.4, 0.1, 1e-12);
+	assert_vec_near(warp1(&op, v3(1.9, 0.6, -0.4)), 1.8, -0.7, 0.3, 1e-12);
+}
+
+static void test_warp_black_hole(void **state)
+{
+	(void)state;
+	struct pattern_op op = op_of(POP_BLACK_HOLE);
+	op.f1 = 1;      /* black_hole <0,0,0>, 1 */
+	op.f2 = 2;
+	op.f3 = 1;
+	assert_vec_near(warp1(&op, v3(0.18, 0.24, 0)), 0.2682, 0.3576, 0, 1e-12);
+	assert_vec_near(warp1(&op, v3(0.3, 0.2, 0.1)), 0.4175006, 0.2783337, 0.1391669, 1e-7);
+	assert_vec_near(warp1(&op, v3(0.66, 0.88, 0)), 0.66, 0.88, 0, 1e-12);
+	op.f4 = 1;      /* inverse */
+	assert_vec_near(warp1(&op, v3(0.18, 0.24, 0)), 0.0918, 0.1224, 0, 1e-12);
+	op.f3 = 3;      /* strength 3 inverse: the pull is capped at the centre */
+	assert_vec_near(warp1(&op, v3(0.18, 0.24, 0)), 0, 0, 0, 1e-12);
+	assert_vec_near(warp1(&op, v3(0.36, 0.48, 0)), 0.1872, 0.2496, 0, 1e-12);
+	op.f4 = 0;      /* strength 2: the push is capped at twice the distance */
+	op.f3 = 2;
+	assert_vec_near(warp1(&op, v3(0.06, 0.08, 0)), 0.12, 0.16, 0, 1e-12);
+}
+
+static void test_warp_mappings(void **state)
+{
+	(void)state;
+	vec3 p = v3(1.824137, 1.79131, -1.773795);
+	struct pattern_op op = op_of(POP_CYLINDRICAL);
+	op.v1 = v3(0, 0, 1);
+	assert_vec_near(warp1(&op, p), 0.8772267, 1.79131, 2.5443711, 1e-7);
+	op.v1 = v3(0, 1, 0);
+	op.f1 = 1;
+	assert_vec_near(warp1(&op, p), 2.2319904, -2.5443711, 1.79131, 1e-7);
+	op = op_of(POP_SPHERICAL);
+	op.v1 = v3(0, 0, 1);
+	assert_vec_near(warp1(&op, p), 0.8772267, 0.6952591, 3.1116902, 1e-7);
+	op.v1 = v3(1, 2, 3);    /* POV-Ray's skewed orientation matrix */
+	op.f1 = 0.5;
+	assert_vec_near(warp1(&op, p), 2.8994699, -0.3521532, 2.736893, 1e-6);
+	op = op_of(POP_TOROIDAL);
+	op.v1 = v3(0, 0, 1);
+	op.f2 = 1;
+	assert_vec_near(warp1(&op, p), 0.8772267, 0.6367607, 2.3651371, 1e-7);
+	op.v1 = v3(0, 1, 0);
+	op.f1 = 1;
+	op.f2 = 1.5;
+	assert_vec_near(warp1(&op, p), 1.8189509, -2.0735242, 1.3809494, 1e-7);
+	op = op_of(POP_PLANAR);
+	op.v1 = v3(0, 0, 1);
+	assert_vec_near(warp1(&op, p), 1.824137, 1.79131, 0, 1e-12);
+	op.v1 = v3(1, 1, 0);
+	op.f1 = 0.5;
+	assert_vec_near(warp1(&op, p), 1.643413, 0.9130941, -0.0232122, 1e-6);
+}
+
+static void test_warp_order(void **state)
+{
+	(void)state;
+	/* warp { repeat 2*x } scale 2: the scale is undone first */
+	struct pattern pt = pattern_make(PAT_BOZO);
+	struct pattern_op op = op_of(POP_REPEAT);
+	op.v1 = v3(2, 0, 0);
+	pattern_add_op(&pt, &op);
+	struct xform s = xform_scale(v3(2, 2, 2));
+	pattern_transform(&pt, &s);
+	assert_near(pattern_point(&pt, v3(-1.055808, 0, 0)).x, 1.472096, 1e-12);
+	pattern_clear(&pt);
+	/* classic turbulence is applied last, in pattern space: `scale 2
+	 * turbulence 0.5 octaves 2` equals `warp { turbulence .. } scale 2` */
+	struct pattern a = pattern_make(PAT_BOZO), b = pattern_make(PAT_BOZO);
+	pattern_transform(&a, &s);
+	a.has_turbulence = true;
+	a.turb.amount = v3(0.5, 0.5, 0.5);
+	a.turb.octaves = 2;
+	op = op_of(POP_TURBULENCE);
+	op.turb = a.turb;
+	pattern_add_op(&b, &op);
+	pattern_transform(&b, &s);
+	vec3 p = v3(-1.055808, -1.587336, -0.415767), qa = pattern_point(&a, p), qb = pattern_point(&b, p);
+	assert_vec_near(qa, qb.x, qb.y, qb.z, 1e-15);
+	assert_near(qa.x, -0.451694, 1e-6);     /* POV-Ray: function { x*0.001+0.5 } */
+	pattern_clear(&a);
+	pattern_clear(&b);
+}
+
+static void test_cells_crackle_character(void **state)
+{
+	(void)state;
+	struct pattern c = pattern_make(PAT_CELLS), k = pattern_make(PAT_CRACKLE);
+	/* cells: constant inside a unit cube, in [0, 1] */
+	assert_near(raw_at(&c, v3(2.1, 3.2, -0.7)), raw_at(&c, v3(2.9, 3.8, -0.1)), 0);
+	double lo = 1, hi = 0;
+	for (int i = 0; i < 500; i++) {
+		vec3 p = v3(i * 0.61, i * 0.23 - 40, 7 - i * 0.37);
+		double v = raw_at(&k, p);
+		assert_true(v >= -1e-12);          /* F2 − F1 ≥ 0 */
+		if (v < lo) lo = v;
+		if (v > hi) hi = v;
+		double cv = raw_at(&c, p);
+		assert_true(cv >= 0 && cv <= 1);
+	}
+	assert_true(lo < 0.05 && hi > 0.4);
+	/* solid: constant near a feature point */
+	k.n[3] = 1;
+	assert_near(raw_at(&k, v3(0.5, 0.5, 0.5)), raw_at(&k, v3(0.5001, 0.5, 0.5)), 0);
+}
+
+static void test_ripples_waves_character(void **state)
+{
+	(void)state;
+	struct pattern r = pattern_make(PAT_RIPPLES), w = pattern_make(PAT_WAVES);
+	for (int i = 0; i < 200; i++) {
+		vec3 p = v3(i * 0.071, 0.3, i * 0.013);
+		double a = raw_at(&r, p), b = raw_at(&w, p);
+		assert_true(a >= 0 && a <= 1);
+		assert_true(b >= 0 && b <= 1);
+	}
+}
+
+static void test_special_normals(void **state)
+{
+	(void)state;
+	enum pattern_kind kinds[] = {PAT_BUMPS, PAT_DENTS, PAT_WRINKLES, PAT_RIPPLES, PAT_WAVES, PAT_FACETS};
+	vec3 n = v3(0, 1, 0);
+	for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
+		struct pattern pt = pattern_make(kinds[i]);
+		struct pattern_ctx c = ctx_at(v3(0.3, 0, 0.7));
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 0.5, c.p, n, &c, &out));
+		assert_near(v3_len(out), 1, 1e-12);
+		assert_true(out.y > 0);
+		/* amount 0 leaves the normal alone */
+		assert_true(pattern_special_normal(&pt, 0, c.p, n, &c, &out));
+		assert_vec_near(out, 0, 1, 0, 1e-12);
+	}
+	struct pattern g = pattern_make(PAT_GRANITE);
+	struct pattern_ctx c = ctx_at(v3(0, 0, 0));
+	vec3 out;
+	assert_false(pattern_special_normal(&g, 0.5, c.p, n, &c, &out));
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_noise_generators_1_2),
+		cmocka_unit_test(test_noise_generator1_clips),
+		cmocka_unit_test(test_noise_character),
+		cmocka_unit_test(test_dnoise_and_turbulence),
+		cmocka_unit_test(test_patterns_measured),
+		cmocka_unit_test(test_warp_repeat),
+		cmocka_unit_test(test_warp_black_hole),
+		cmocka_unit_test(test_warp_mappings),
+		cmocka_unit_test(test_warp_order),
+		cmocka_unit_test(test_cells_crackle_character),
+		cmocka_unit_test(test_ripples_waves_character),
+		cmocka_unit_test(test_special_normals),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
