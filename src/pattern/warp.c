@@ -122,6 +122,36 @@ static vec3 warp_mapping(const struct pattern_op *op, vec3 p)
 	return orient(op->v1, v3(u, v, d));
 }
 
+/* warp { cubic }: the point's direction laid out as a box's uv mapping
+ * lays out the faces of the cube [-1,1]^3 (4 x 3 cells in the unit
+ * square), with its max-norm distance from the origin as the third
+ * coordinate. Measured against POV-Ray 3.7 with gradient patterns, ties
+ * between faces included. */
+static vec3 warp_cubic(vec3 p)
+{
+	/* Per face (2*axis + positive side): cell column and row, the axes
+	 * u and v follow, and whether each runs reversed (as box.c's uv). */
+	static const struct { int col, row, ua, va; bool uflip, vflip; } cell[6] = {
+		{0, 1, 2, 1, false, false}, {2, 1, 2, 1, true, false},
+		{1, 0, 0, 2, false, false}, {1, 2, 0, 2, false, true},
+		{3, 1, 0, 1, true, false},  {1, 1, 0, 1, false, false},
+	};
+	double ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+	double d = fmax(ax, fmax(ay, az));
+	if (!(d > 0))
+		return v3(0, 0, 0);
+	int axis = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+	int face = 2 * axis + (v3_get(p, axis) > 0);
+	double c[2];
+	int a[2] = {cell[face].ua, cell[face].va};
+	bool flip[2] = {cell[face].uflip, cell[face].vflip};
+	for (int i = 0; i < 2; i++) {
+		double t = (v3_get(p, a[i]) / d + 1) / 2;
+		c[i] = flip[i] ? 1 - t : t;
+	}
+	return v3((cell[face].col + c[0]) / 4, (cell[face].row + c[1]) / 3, d);
+}
+
 static vec3 apply_op(const struct pattern_op *op, vec3 p, int generator)
 {
 	switch (op->kind) {
@@ -137,6 +167,8 @@ static vec3 apply_op(const struct pattern_op *op, vec3 p, int generator)
 		return warp_mapping(op, p);
 	case POP_PLANAR:
 		return orient(op->v1, v3(p.x, p.y, op->f1));
+	case POP_CUBIC:
+		return warp_cubic(p);
 	}
 	return p;
 }

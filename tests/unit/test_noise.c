@@ -268,6 +268,28 @@ static void test_warp_mappings(void **state)
 	assert_vec_near(warp1(&op, p), 1.643413, 0.9130941, -0.0232122, 1e-6);
 }
 
+/* warp { cubic }: POV-Ray 3.7 printed gradient x and gradient y through
+ * the warp (u and v) at these points, faces and ties between faces
+ * included; the third coordinate is the max-norm distance. */
+static void test_warp_cubic(void **state)
+{
+	(void)state;
+	static const double cases[][5] = {
+		{1, .2, .3, 0.58750, 0.53333},   {-1, .2, .3, 0.16250, 0.53333}, {.2, 1, .3, 0.40000, 0.78333},
+		{.2, -1, .3, 0.40000, 0.21667},  {.2, .3, 1, 0.40000, 0.55000},  {.2, .3, -1, 0.85000, 0.55000},
+		{.1, .1, .05, 0.56250, 0.66667}, {.1, .05, .1, 0.50000, 0.58333}, {.05, .1, .1, 0.43750, 0.66667},
+		{-.1, -.1, .05, 0.18750, 0.33333}, {.1, -.05, -.1, 0.75000, 0.41667}, {.05, -.1, -.1, 0.43750, 0.00000},
+	};
+	struct pattern_op op = op_of(POP_CUBIC);
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		const double *c = cases[i];
+		double d = fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
+		assert_vec_near(warp1(&op, v3(c[0], c[1], c[2])), c[3], c[4], d, 6e-6);
+	}
+	vec3 q = warp1(&op, v3(0.25, 0.1, 0.1)); /* POV-Ray: gradient x 0.575, gradient z 0.25 */
+	assert_true(fabs(q.x - 0.575) < 1e-9 && fabs(q.z - 0.25) < 1e-9);
+}
+
 static void test_warp_order(void **state)
 {
 	(void)state;
@@ -365,6 +387,7 @@ int main(void)
 		cmocka_unit_test(test_warp_repeat),
 		cmocka_unit_test(test_warp_black_hole),
 		cmocka_unit_test(test_warp_mappings),
+		cmocka_unit_test(test_warp_cubic),
 		cmocka_unit_test(test_warp_order),
 		cmocka_unit_test(test_cells_crackle_character),
 		cmocka_unit_test(test_ripples_waves_character),
