@@ -29,6 +29,35 @@ typedef int oiio_write_fn(const char *path, const char *format, int width, int h
 int oiio_write(const char *path, const char *format, int width, int height, int channels,
                enum oiio_type type, const void *pixels, int srgb, char *err, unsigned errsize);
 
+/* An image as read from a file: the samples as stored (integer formats
+ * scaled to [0, 1], nothing decoded), and what the file says about them.
+ * px and index are malloc'd and belong to the caller (free()). */
+struct oiio_image {
+	int width, height;
+	int channels;          /* 1 grey, 2 grey+alpha, 3 rgb, 4 rgba (extra channels dropped) */
+	float *px;             /* width*height*channels, rows top to bottom */
+	unsigned char *index;  /* palette index per pixel for paletted PNG, GIF and
+	                        * colour-mapped TGA files; NULL otherwise */
+	int palette_size;      /* entries in the palette; 0 without one */
+	int bits;              /* bits per sample in the file (8, 16, 32...) */
+	int is_float;          /* half or float samples (EXR, HDR, float TIFF) */
+	double file_gamma;     /* the decoding gamma the file states (PNG gAMA), else 0 */
+	char format[32];       /* OpenImageIO's format name: "png", "openexr", "hdr", ... */
+};
+
+#define OIIO_READ_SYMBOL "lucent_oiio_read"
+typedef int oiio_read_fn(const char *path, struct oiio_image *out, char *err, unsigned errsize);
+
+/* Read the first image of the file at path, whatever its format (known
+ * by its content or extension). OpenImageIO does not tell palette
+ * indices, so for paletted files the module reads a second copy of the
+ * file whose palette entry i is made the colour (i, 0, 0): the red
+ * channel of that copy is the index, exactly, even where two entries
+ * have the same colour. Returns 0 on success; on failure (including a
+ * module that cannot be loaded) writes a message into err and leaves
+ * *out empty. */
+int oiio_read(const char *path, struct oiio_image *out, char *err, unsigned errsize);
+
 #ifdef __cplusplus
 }
 #endif

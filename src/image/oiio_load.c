@@ -19,6 +19,7 @@
  * every later call reports it. */
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 static oiio_write_fn *write_fn;
+static oiio_read_fn *read_fn;
 static char load_error[PATH_MAX + 256];
 
 static void *try_open(const char *path, char *why, size_t n)
@@ -54,12 +55,17 @@ static void load(void)
 		if (!h)
 			h = try_open(LUCENT_PKGLIB_DIR "/" MODULE_NAME, why, sizeof why);
 	}
-	if (h)
+	if (h) {
 		write_fn = (oiio_write_fn *)dlsym(h, OIIO_WRITE_SYMBOL);
-	if (!write_fn)
+		read_fn = (oiio_read_fn *)dlsym(h, OIIO_READ_SYMBOL);
+	}
+	if (!write_fn || !read_fn) {
+		write_fn = NULL;
+		read_fn = NULL;
 		snprintf(load_error, sizeof load_error,
 		         "cannot load the image module %s (%s); set LUCENT_OIIO_MODULE to its path",
 		         MODULE_NAME, why[0] ? why : "entry point missing");
+	}
 }
 
 int oiio_write(const char *path, const char *format, int width, int height, int channels, enum oiio_type type,
@@ -72,4 +78,16 @@ int oiio_write(const char *path, const char *format, int width, int height, int 
 		return 1;
 	}
 	return write_fn(path, format, width, height, channels, type, pixels, srgb, err, errsize);
+}
+
+int oiio_read(const char *path, struct oiio_image *out, char *err, unsigned errsize)
+{
+	memset(out, 0, sizeof *out);
+	pthread_once(&once, load);
+	if (!read_fn) {
+		if (err && errsize)
+			snprintf(err, errsize, "%s", load_error);
+		return 1;
+	}
+	return read_fn(path, out, err, errsize);
 }

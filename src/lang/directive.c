@@ -731,6 +731,11 @@ static char *find_include(struct parser *p, const char *name, uint32_t from_file
 	return NULL;
 }
 
+char *parse_find_file(struct parser *p, const char *name, uint32_t from_file)
+{
+	return find_include(p, name, from_file);
+}
+
 /* #include STRING */
 static void dir_include(struct parser *p, struct srcpos at)
 {

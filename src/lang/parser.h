@@ -223,6 +223,12 @@ struct value spline_eval(const struct spline *s, double t, struct srcpos at);
 /* Evaluate as another spline type (enum spline_kind), or its own if < 0. */
 struct value spline_eval_as(const struct spline *s, double t, int kind, struct srcpos at);
 
+/* Find a file the scene names (#include, image files) as POV-Ray does:
+ * relative to the folder of file from_file, then the current folder, then
+ * each +L path, then lucent's stdlib (directive.c). Returns a malloc'd
+ * path, or NULL if it is not there. */
+char *parse_find_file(struct parser *p, const char *name, uint32_t from_file);
+
 /* Write #debug text, wrapping lines at 80 columns as POV-Ray does
  * (at the last space when there is one); parse_debug_flush writes what is
  * left at the end. */

@@ -105,8 +105,10 @@ struct image_mapping {
 	bool has_filter_all, has_transmit_all;
 	int nentry;                  /* per-palette-entry filter/transmit overrides */
 	struct { int index; double filter, transmit; bool has_filter, has_transmit; } *entry; /* owned */
-	double gamma;                /* 0: the file's own */
-	double major_radius;         /* map_type 5 */
+	double gamma;                /* 0: the file's own; IMAGE_GAMMA_SRGB (-1): `gamma srgb` */
+	double major_radius;         /* map_type 5 (POV-Ray's block has no keyword for it: 0 means 1) */
+	bool use_index;              /* bump_map use_index: the palette index is the height */
+	int premultiplied;           /* -1 the format's own, 0 straight alpha, 1 associated alpha */
 };
 
 struct pattern {
