@@ -387,11 +387,11 @@ static void dir_macro(struct parser *p, struct srcpos at)
 			if (!m->params) abort();
 		}
 		m->params[m->nparams++] = t.str;
+		/* As in POV-Ray the commas may be left out, and one may
+		 * follow the last parameter. */
 		t = parse_raw(p);
 		if (t.kind == TOK_COMMA)
 			t = parse_raw(p);
-		else if (t.kind != TOK_RPAREN)
-			raw_expected(p, &t, "',' or ')' in the parameter list");
 	}
 	struct frame *f = top(p);
 	m->file = f->file;
@@ -508,10 +508,22 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			n++;
 			if (n > MAX_MACRO_ARGS)
 				parse_error_at(p, name->pos, "more than %d arguments in a macro call", MAX_MACRO_ARGS);
-			if (parse_accept(p, TOK_COMMA))
+			/* POV-Ray lets the commas be left out, and one follow
+			 * the last argument. */
+			bool comma = parse_accept(p, TOK_COMMA);
+			/* Look at the next token raw: reading it would take a lone
+			 * identifier that the next argument passes by reference. */
+			f = top(p);
+			if (!p->have_cur && f->pos < f->end && f->toks[f->pos].kind == TOK_RPAREN) {
+				f->pos++;
+				break;
+			}
+			if (comma || (!p->have_cur && f->pos < f->end && f->toks[f->pos].kind != TOK_HASH))
 				continue;
 			if (parse_accept(p, TOK_RPAREN))
 				break;
+			if (!parse_is(p, TOK_EOF))
+				continue;
 			parse_expected(p, "',' or ')' after a macro argument");
 		}
 	}

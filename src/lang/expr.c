@@ -177,7 +177,9 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 
 /* ---- primaries ---- */
 
-/* '<' expr { ',' expr } '>'  (2 to 5 components) */
+/* '<' expr { [','] expr } '>'  (2 to 5 components). As in POV-Ray the
+ * commas may be left out: <1 2 3> is <1, 2, 3>, while <1 -2 3> is <-1, 3>
+ * (the '-' continues the first component). */
 static struct value parse_vector_literal(struct parser *p)
 {
 	struct srcpos at = parse_peek(p)->pos;
@@ -194,6 +196,8 @@ static struct value parse_vector_literal(struct parser *p)
 			continue;
 		if (parse_is(p, TOK_GT))
 			break;
+		if (n < 5 && parse_starts_expression(p))
+			continue;
 		parse_expected(p, "',' or '>' in vector");
 	}
 	parse_advance(p);

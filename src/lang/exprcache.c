@@ -289,10 +289,19 @@ static void primary(struct compiler *c, bool rel)
 		 * rel, with '>' closing (expr.c's parse_vector_literal). */
 		c->at++;
 		int n = 0;
-		do {
+		for (;;) {
 			cond(c, rel, true);
 			n++;
-		} while (c->ok && accept(c, TOK_COMMA));
+			if (!c->ok)
+				break;
+			if (accept(c, TOK_COMMA))
+				continue;
+			if (peek(c)->kind == TOK_GT || n >= 5)
+				break;
+			/* Commas may be left out: the next component begins here
+			 * (the ordinary parser decides; any token that cannot begin
+			 * one fails the compile). */
+		}
 		if (!accept(c, TOK_GT) || n < 2 || n > 5)
 			c->ok = false;
 		emit(c, X_VEC, n, 0, 1 - n);

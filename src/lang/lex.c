@@ -362,18 +362,21 @@ static void sput(struct lexer *lx, size_t *len, char c)
 	lx->sbuf[(*len)++] = c;
 }
 
-/* A string literal: "..." with backslash escapes. Strings may not span
- * lines; an unterminated one is reported where it began. */
+/* A string literal: "..." with backslash escapes. As in POV-Ray a string
+ * may span lines (the line breaks are part of it); one that the file ends
+ * inside is reported where it began. */
 static bool lex_string(struct lexer *lx)
 {
 	struct srcpos start = here(lx, lx->i);
 	size_t len = 0;
 	lx->i++; /* opening quote */
 	for (;;) {
-		if (lx->i >= lx->n || lx->s[lx->i] == '\n') {
-			diag_report(lx->d, DIAG_ERROR, start, "unterminated string: no closing '\"' on this line");
+		if (lx->i >= lx->n) {
+			diag_report(lx->d, DIAG_ERROR, start, "unterminated string: the file ends before its closing '\"'");
 			return false;
 		}
+		if (lx->s[lx->i] == '\n')
+			newline(lx, lx->i);
 		char c = lx->s[lx->i++];
 		if (c == '"')
 			break;

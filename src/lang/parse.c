@@ -187,6 +187,14 @@ struct token parse_raw(struct parser *p)
 	}
 }
 
+/* A '#' held as the lookahead is the sentinel of parse_peek_cont: the
+ * directive is still in its frame, and runs when a token is really needed. */
+static void drop_sentinel(struct parser *p)
+{
+	if (p->have_cur && p->cur.kind == TOK_HASH)
+		p->have_cur = false;
+}
+
 /* Make the next token current, running directives and macro calls before
  * it. */
 static void fetch(struct parser *p)
@@ -196,6 +204,11 @@ static void fetch(struct parser *p)
 		if (t.kind == TOK_HASH) {
 			struct frame *f = &p->frames[p->nframes - 1];
 			parse_directive(p, f->pos - 1);
+			/* A directive read inside another's operands (an object
+			 * #declared through a macro whose body has #locals) may
+			 * leave the '#' after it as the lookahead; fetch wants a
+			 * real token, so that directive runs now. */
+			drop_sentinel(p);
 			continue;
 		}
 		if (t.kind == TOK_IDENT) {
@@ -210,13 +223,6 @@ static void fetch(struct parser *p)
 	}
 }
 
-/* A '#' held as the lookahead is the sentinel of parse_peek_cont: the
- * directive is still in its frame, and runs when a token is really needed. */
-static void drop_sentinel(struct parser *p)
-{
-	if (p->have_cur && p->cur.kind == TOK_HASH)
-		p->have_cur = false;
-}
 
 const struct token *parse_peek(struct parser *p)
 {

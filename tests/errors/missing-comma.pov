@@ -1,3 +1,3 @@
-// expect: 3:16: expected ',' or '>' in vector, found number 0
-// POV-Ray's object arguments need no commas, but a vector's do.
-sphere { <0, 0 0>, 1 }
+// expect: 3:16: expected ',' or '>' in vector, found '}'
+// Commas between a vector's components may be left out, but the vector must be closed.
+sphere { <0, 0 }, 1 }
