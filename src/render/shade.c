@@ -88,7 +88,9 @@ rgb shade_dispersion_color(int i, int n)
 	for (int j = 0; j < n; j++)
 		sum = rgb_add(sum, spectrum(4.0 * j / (n - 1)));
 	rgb c = spectrum(4.0 * i / (n - 1));
-	return rgb_make(c.r / sum.r, c.g / sum.g, c.b / sum.b);
+	/* A channel no sample covers (green with 2 samples) is shared evenly. */
+	return rgb_make(sum.r > 0 ? c.r / sum.r : 1.0 / n, sum.g > 0 ? c.g / sum.g : 1.0 / n,
+	                sum.b > 0 ? c.b / sum.b : 1.0 / n);
 }
 
 double shade_dispersion_ior(double ior, double dispersion, int i, int n)
