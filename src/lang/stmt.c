@@ -150,6 +150,7 @@ static void parse_global_settings(struct parser *p)
 		}
 		case KW_ADC_BAILOUT: parse_advance(p); gs->adc_bailout = parse_float(p); break;
 		case KW_AMBIENT_LIGHT: parse_advance(p); gs->ambient_light = rgb_of(parse_color(p)); break;
+		case KW_IRID_WAVELENGTH: parse_advance(p); gs->irid_wavelength = rgb_of(parse_color(p)); break;
 		default:
 			parse_expected(p, "a global setting or '}'");
 		}

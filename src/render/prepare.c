@@ -2,6 +2,7 @@
 #include "render/prepare.h"
 
 #include "geom/csg.h"
+#include "image/image.h"
 
 #include <stdlib.h>
 
@@ -12,23 +13,93 @@ const char *feature_name(enum feature f)
 	case FEAT_PHONG: return "phong highlights";
 	case FEAT_SPECULAR: return "specular highlights";
 	case FEAT_REFLECTION: return "reflection";
+	case FEAT_TRANSPARENCY: return "transparency";
+	case FEAT_REFRACTION: return "refraction";
+	case FEAT_NORMALS: return "normals";
+	case FEAT_IRID: return "iridescence";
+	case FEAT_FADE: return "fading";
+	case FEAT_DISPERSION: return "dispersion";
+	case FEAT_CAUSTICS: return "caustics";
+	case FEAT_FRESNEL: return "fresnel reflection";
+	case FEAT_LAYERS: return "layered textures";
+	case FEAT_UV: return "uv mapping";
 	default: return "?";
 	}
 }
 
-/* The effects a texture's finish can produce. */
-static unsigned finish_features(const struct texture *t)
+/* Can pigment pg let light through anywhere (a filter or transmit above
+ * 0 in any colour it can give, a hole in a map, an image's alpha)? */
+static bool pigment_transmits(const struct pigment *pg)
+{
+	if (!pg)
+		return true;
+	switch (pg->kind) {
+	case PIGMENT_SOLID:
+		return pg->color.f > 0 || pg->color.t > 0;
+	case PIGMENT_IMAGE: {
+		const struct image_mapping *m = &pg->pat.img;
+		return m->once || m->has_filter_all || m->has_transmit_all || m->nentry > 0 || m->use_alpha ||
+		       (m->img && m->img->has_alpha);
+	}
+	case PIGMENT_PATTERN:
+		break;
+	}
+	if (pg->pat.kind == PAT_PIGMENT && pigment_transmits(pg->pat.pig))
+		return true;
+	const struct blend_map *m = pg->map;
+	if (!m)
+		return false;
+	for (int i = 0; i < m->n; i++) {
+		if (m->kind == MAP_COLOR && (m->e[i].color.f > 0 || m->e[i].color.t > 0))
+			return true;
+		if (m->kind == MAP_PIGMENT && pigment_transmits(m->e[i].item))
+			return true;
+	}
+	return false;
+}
+
+static bool pattern_uv(const struct pattern *pt)
+{
+	return pt->uv_mapping;
+}
+
+/* The effects texture t (every layer and map entry) can produce. */
+static unsigned texture_features(const struct texture *t, int depth)
 {
 	unsigned f = 0;
-	if (!t)
-		return f;
-	const struct finish *fin = &t->finish;
-	if (fin->phong > 0)
-		f |= FEAT_PHONG;
-	if (fin->specular > 0)
-		f |= FEAT_SPECULAR;
-	if (rgb_max(fin->reflection_max) > 0)
-		f |= FEAT_REFLECTION;
+	for (; t && depth < 64; t = t->next, depth++) {
+		if (t->kind != TEX_PLAIN) {
+			f |= FEAT_LAYERS;
+			if (pattern_uv(&t->pat))
+				f |= FEAT_UV;
+			for (int i = 0; t->map && i < t->map->n; i++)
+				f |= texture_features(t->map->e[i].item, depth + 1);
+			continue;
+		}
+		if (t->next)
+			f |= FEAT_LAYERS;
+		const struct finish *fin = &t->finish;
+		if (fin->phong > 0)
+			f |= FEAT_PHONG;
+		if (fin->specular > 0)
+			f |= FEAT_SPECULAR;
+		if (rgb_max(fin->reflection_max) > 0 || rgb_max(fin->reflection_min) > 0) {
+			f |= FEAT_REFLECTION;
+			if (fin->reflection_fresnel)
+				f |= FEAT_FRESNEL;
+		}
+		if (fin->irid != 0)
+			f |= FEAT_IRID;
+		if (pigment_transmits(t->pigment))
+			f |= FEAT_TRANSPARENCY;
+		if (t->pigment && pattern_uv(&t->pigment->pat))
+			f |= FEAT_UV;
+		if (t->normal) {
+			f |= FEAT_NORMALS;
+			if (pattern_uv(&t->normal->pat))
+				f |= FEAT_UV;
+		}
+	}
 	return f;
 }
 
@@ -45,12 +116,25 @@ static unsigned object_features(struct object *o, bool *caster)
 	}
 	if (!(o->flags & OBJ_NO_SHADOW))
 		*caster = true;
-	f |= finish_features(o->tex);
+	f |= texture_features(o->tex, 0);
 	if (o->ops->textures) {
 		struct texture *const *own;
 		size_t n = o->ops->textures(o, &own);
 		for (size_t i = 0; i < n; i++)
-			f |= finish_features(own[i]);
+			f |= texture_features(own[i], 0);
+	}
+	const struct interior *in = o->interior;
+	/* An interior matters where light can pass into it, and for fresnel
+	 * reflection, which reads its ior. */
+	if (in && (f & FEAT_TRANSPARENCY)) {
+		if (in->ior != 1)
+			f |= FEAT_REFRACTION;
+		if (in->fade_distance > 0 && in->fade_power > 0)
+			f |= FEAT_FADE;
+		if (in->dispersion != 1)
+			f |= FEAT_DISPERSION;
+		if (in->caustics > 0)
+			f |= FEAT_CAUSTICS;
 	}
 	return f;
 }
@@ -66,7 +150,7 @@ unsigned prepare_features(const struct scene *s)
 		f |= object_features(s->objects[i], &caster);
 	/* Without lights no highlight can appear either. */
 	if (s->nlights == 0)
-		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR);
+		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR | FEAT_IRID | FEAT_CAUSTICS);
 	if (shadow_light && caster)
 		f |= FEAT_SHADOWS;
 	return f;
@@ -116,6 +200,44 @@ static void add_top(struct objlist *bounded, struct objlist *unbounded, struct o
 	objlist_push(aabb_is_finite(o->bounds) ? bounded : unbounded, o);
 }
 
+/* Give every leaf of o without an interior a reference to in, so that the
+ * leaves of one object share one (as POV-Ray's objects do) and a ray can
+ * tell which one it is inside by pointer. */
+static void fill_interior(struct object *o, struct interior *in)
+{
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			fill_interior(kids[i], in);
+	} else if (!o->interior) {
+		const struct finish *f = o->tex && o->tex->kind == TEX_PLAIN ? &o->tex->finish : NULL;
+		if (f && (f->legacy_ior > 0 || f->legacy_caustics != 0)) {
+			/* finish { ior caustics }: POV-Ray's pre-3.1 places */
+			struct interior *own = interior_copy(in);
+			if (f->legacy_ior > 0)
+				own->ior = f->legacy_ior;
+			own->caustics = f->legacy_caustics;
+			o->interior = own;
+		} else {
+			o->interior = interior_ref(in);
+		}
+	}
+}
+
+/* The interior of the first leaf of o that contains pt (o itself does). */
+static const struct interior *interior_at(struct object *o, vec3 pt)
+{
+	struct object **kids;
+	if (!o->ops->children)
+		return o->interior;
+	size_t n = o->ops->children(o, &kids);
+	for (size_t i = 0; i < n; i++)
+		if (object_inside(kids[i], pt))
+			return interior_at(kids[i], pt);
+	return n ? interior_at(kids[0], pt) : NULL;
+}
+
 struct prepared *prepare_scene(struct scene *s)
 {
 	struct prepared *p = calloc(1, sizeof *p);
@@ -135,6 +257,21 @@ struct prepared *prepare_scene(struct scene *s)
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
 	p->features = prepare_features(s);
+	if (p->features & FEAT_MEDIA) {
+		/* Interiors are told apart by pointer; the camera starts inside
+		 * those of the objects around it (as in POV-Ray, where a camera
+		 * inside glass sees through it from within). */
+		for (size_t i = 0; i < s->nobjects; i++) {
+			struct interior *in = interior_new();
+			fill_interior(s->objects[i], in);
+			interior_unref(in);
+			if (object_inside(s->objects[i], s->camera.location) && p->camera_medium.n < MEDIUM_MAX) {
+				const struct interior *ci = interior_at(s->objects[i], s->camera.location);
+				if (ci)
+					p->camera_medium.in[p->camera_medium.n++] = ci;
+			}
+		}
+	}
 	p->max_depth = s->gs.max_trace_level;
 	return p;
 }

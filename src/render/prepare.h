@@ -14,7 +14,30 @@ enum feature {
 	FEAT_PHONG = 1 << 1,      /* some finish has a phong highlight */
 	FEAT_SPECULAR = 1 << 2,   /* some finish has a specular highlight */
 	FEAT_REFLECTION = 1 << 3, /* some finish reflects */
-	FEAT__COUNT = 4
+	FEAT_TRANSPARENCY = 1 << 4, /* some pigment filters or transmits: transmitted rays, transparent shadows */
+	FEAT_REFRACTION = 1 << 5, /* a see-through object has an ior other than 1 */
+	FEAT_NORMALS = 1 << 6,    /* some texture perturbs its normal */
+	FEAT_IRID = 1 << 7,       /* some finish is iridescent */
+	FEAT_FADE = 1 << 8,       /* a see-through object's interior fades light */
+	FEAT_DISPERSION = 1 << 9, /* a refracting interior disperses light */
+	FEAT_CAUSTICS = 1 << 10,  /* a see-through object's interior has fake caustics */
+	FEAT_FRESNEL = 1 << 11,   /* some reflection block uses fresnel */
+	FEAT_LAYERS = 1 << 12,    /* layered, patterned or material-mapped textures */
+	FEAT_UV = 1 << 13,        /* some pattern is uv-mapped */
+	FEAT__COUNT = 14
+};
+
+/* Rays track the media they are in (refraction, fading, Fresnel) only
+ * when the scene has one of these. */
+#define FEAT_MEDIA (FEAT_REFRACTION | FEAT_FADE | FEAT_FRESNEL | FEAT_DISPERSION)
+
+/* The interiors a ray is inside, innermost last. Passed by pointer and
+ * copied on change: a ray entering a surface gets a new one. Deeper nesting
+ * than MEDIUM_MAX keeps the outer interiors and forgets the rest. */
+enum { MEDIUM_MAX = 16 };
+struct medium {
+	int n;
+	const struct interior *in[MEDIUM_MAX];
 };
 
 struct prepared {
@@ -25,6 +48,7 @@ struct prepared {
 	unsigned features;               /* enum feature */
 	int max_depth;                   /* max_trace_level */
 	bool signature;                  /* --signature: flat colour per primitive */
+	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA) */
 };
 
 /* Prepare s for rendering. s must outlive the result. */

@@ -1,8 +1,22 @@
-/* trace.c: ray casting and shading (see trace.h). */
+/* trace.c: ray casting and shading (see trace.h). The order of the terms
+ * and how layers, reflection and transmission combine follow what POV-Ray
+ * 3.7 renders (measured; see shade.c for the single formulas). */
 #include "render/trace.h"
+
+#include "image/image.h"
+#include "math/hash.h"
+#include "render/shade.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+/* One light as seen from the surface being shaded. */
+struct lit {
+	vec3 dir;    /* unit, toward the light */
+	rgb color;   /* what arrives through transparent surfaces; black: in shadow */
+	bool back;   /* the light is behind the face the ray sees */
+	bool on;     /* lights the surface at all */
+};
 
 void tracer_init(struct tracer *tr, const struct prepared *p)
 {
@@ -10,13 +24,16 @@ void tracer_init(struct tracer *tr, const struct prepared *p)
 	memset(&tr->stats, 0, sizeof tr->stats);
 	size_t n = p->scene->nlights ? p->scene->nlights : 1;
 	tr->last_blocker = calloc(n, sizeof *tr->last_blocker);
-	if (!tr->last_blocker) abort();
+	tr->lit = calloc(n, sizeof *tr->lit);
+	if (!tr->last_blocker || !tr->lit) abort();
 }
 
 void tracer_free(struct tracer *tr)
 {
 	free(tr->last_blocker);
+	free(tr->lit);
 	tr->last_blocker = NULL;
+	tr->lit = NULL;
 }
 
 double trace_epsilon(vec3 p, vec3 from)
@@ -96,95 +113,480 @@ static rgb signature_color(unsigned id)
 	}
 }
 
-rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)
+enum { MAX_LAYERS = 32, SHADOW_CROSSINGS = 64 };
+
+/* Everything the layers of one hit share. */
+struct surface {
+	vec3 pt;                     /* the hit point */
+	vec3 dir;                    /* unit ray direction */
+	vec3 n;                      /* unit geometric normal, facing the ray */
+	double eps;                  /* offset for secondary rays */
+	const struct object *obj;    /* the primitive hit */
+	struct pattern_ctx ctx;      /* patterns at the world point */
+	struct pattern_ctx uvctx;    /* patterns under uv_mapping: (u, v, 0) */
+	const struct medium *med;    /* the interiors the ray travels in */
+	const struct interior *in;   /* the object's interior (never NULL with FEAT_MEDIA) */
+	bool leaving;                /* the ray leaves that interior here */
+	int depth;
+};
+
+/* The default interior of objects without one, when media are not tracked. */
+static const struct interior default_interior = {.refs = 1, .ior = 1, .dispersion = 1, .dispersion_samples = 7};
+
+static const struct pattern_ctx *ctx_for(const struct surface *s, const struct pattern *pt)
+{
+	return pt->uv_mapping ? &s->uvctx : &s->ctx;
+}
+
+static double medium_ior(const struct medium *m)
+{
+	return m && m->n ? m->in[m->n - 1]->ior : 1.0;
+}
+
+static bool medium_has(const struct medium *m, const struct interior *in)
+{
+	for (int i = 0; m && i < m->n; i++)
+		if (m->in[i] == in)
+			return true;
+	return false;
+}
+
+/* The medium after crossing the surface of interior `in`: entered (pushed)
+ * or left (removed). */
+static void medium_cross(const struct medium *m, const struct interior *in, struct medium *out)
+{
+	out->n = 0;
+	bool removed = false;
+	for (int i = 0; m && i < m->n; i++) {
+		if (m->in[i] == in) {
+			removed = true;
+			continue;
+		}
+		out->in[out->n++] = m->in[i];
+	}
+	if (!removed && out->n < MEDIUM_MAX)
+		out->in[out->n++] = in;
+}
+
+/* A layer of a stack that is itself patterned (POV-Ray forbids this in the
+ * language; a texture built otherwise gets the entry the pattern favours). */
+static const struct texture *plain_of(const struct texture *t, const struct surface *s)
+{
+	for (int guard = 0; t && t->kind != TEX_PLAIN && guard < 64; guard++) {
+		const struct blend_map *m = t->map;
+		if (!m || m->n == 0)
+			return NULL;
+		int i;
+		if (t->kind == TEX_MATERIAL) {
+			struct rgbft c;
+			image_map_eval(&t->pat.img, pattern_point(&t->pat, ctx_for(s, &t->pat)->p), &c, &i);
+		} else if (pattern_is_block(t->pat.kind)) {
+			i = (int)pattern_value(&t->pat, ctx_for(s, &t->pat));
+		} else {
+			int lo, hi;
+			double w;
+			blend_map_find(m, pattern_value(&t->pat, ctx_for(s, &t->pat)), &lo, &hi, &w);
+			i = w < 0.5 ? lo : hi;
+		}
+		i = i < 0 ? 0 : i >= m->n ? m->n - 1 : i;
+		t = m->e[i].item;
+	}
+	return t;
+}
+
+/* What a plain layer lets through: filter * colour + transmit. */
+static rgb layer_filter(struct rgbft c)
+{
+	return rgb_make(c.f * c.r + c.t, c.f * c.g + c.t, c.f * c.b + c.t);
+}
+
+/* The share of light the texture stack t lets through at s (product of
+ * its layers; patterned textures blend their entries'). */
+static rgb surface_filter(const struct texture *t, const struct surface *s)
+{
+	rgb f = rgb_make(1, 1, 1);
+	for (; t; t = t->next) {
+		if (t->kind == TEX_PATTERNED && t->map && !pattern_is_block(t->pat.kind)) {
+			int lo, hi;
+			double w;
+			blend_map_find(t->map, pattern_value(&t->pat, ctx_for(s, &t->pat)), &lo, &hi, &w);
+			rgb a = t->map->e[lo].item ? surface_filter(t->map->e[lo].item, s) : rgb_make(1, 1, 1);
+			rgb b = t->map->e[hi].item ? surface_filter(t->map->e[hi].item, s) : rgb_make(1, 1, 1);
+			return rgb_mul(f, rgb_add(rgb_scale(a, 1 - w), rgb_scale(b, w)));
+		}
+		const struct texture *pl = plain_of(t, s);
+		if (!pl)
+			return f;
+		if (pl != t)
+			return rgb_mul(f, surface_filter(pl, s));
+		f = rgb_mul(f, layer_filter(pigment_eval(pl->pigment, ctx_for(s, &pl->pigment->pat))));
+		if (rgb_max(f) <= 0)
+			break;
+	}
+	return f;
+}
+
+/* Fill the pattern contexts of s for a hit h on s->obj. */
+static void surface_contexts(struct surface *s, const struct hit *h, bool uv_wanted)
+{
+	s->ctx = (struct pattern_ctx){.p = s->pt, .normal = s->n, .dir = s->dir, .noise_generator = 2};
+	s->uvctx = s->ctx;
+	double uv[2] = {0, 0};
+	const struct object *o = s->obj;
+	if (uv_wanted && o->ops->uv) {
+		vec3 q = o->has_xf ? mat_point(&o->xf.inv, s->pt) : s->pt;
+		o->ops->uv(o, q, h, uv);
+	}
+	s->uvctx.p = v3(uv[0], uv[1], 0);
+}
+
+/* The light li arriving at pt along ldir (length dist) through the
+ * surfaces in between, for a shadow ray starting in medium med: black
+ * when an opaque surface blocks it. Transparent surfaces multiply it by
+ * their filter (and their fake caustics), interiors by their fading. */
+static rgb light_through(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, double dist, double eps,
+                         const struct medium *med)
 {
 	const struct prepared *p = tr->p;
-	const struct scene *s = p->scene;
+	rgb lc = p->scene->lights[li].color;
+	if (!(p->features & FEAT_TRANSPARENCY))
+		return shadowed(tr, li, pt, ldir, dist, eps) ? rgb_make(0, 0, 0) : lc;
+	struct ray sr = {pt, ldir};
+	double tmax = dist - 2 * eps, t0 = 0, last = 0;
+	struct medium m = {0};
+	if (med && (p->features & FEAT_MEDIA))
+		m = *med;
+	for (int k = 0; k < SHADOW_CROSSINGS; k++) {
+		struct hit h;
+		tr->stats.rays[RAY_SHADOW]++;
+		if (!trace_closest(p, &sr, t0, tmax, OBJ_NO_SHADOW, &h))
+			break;
+		struct surface s = {.obj = h.obj};
+		s.pt = v3_madd(sr.org, sr.dir, h.t);
+		s.dir = ldir;
+		s.n = object_normal(h.obj, s.pt, &h);
+		surface_contexts(&s, &h, (p->features & FEAT_UV) != 0);
+		const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
+		rgb f = surface_filter(tex ? tex : h.obj->tex, &s);
+		lc = rgb_mul(lc, f);
+		if (rgb_max(lc) <= 0)
+			return rgb_make(0, 0, 0);
+		const struct interior *in = h.obj->interior;
+		if (in) {
+			if ((p->features & FEAT_CAUSTICS) && in->caustics > 0)
+				lc = rgb_scale(lc, shade_caustics(v3_dot(s.n, ldir), in->caustics));
+			if (p->features & FEAT_MEDIA) {
+				if (medium_has(&m, in) && (p->features & FEAT_FADE) && in->fade_distance > 0 && in->fade_power > 0)
+					lc = rgb_mul(lc, shade_fade(in, h.t - last));
+				struct medium next;
+				medium_cross(&m, in, &next);
+				m = next;
+			}
+		}
+		last = h.t;
+		t0 = h.t + trace_epsilon(s.pt, pt);
+	}
+	return lc;
+}
+
+/* Light every light casts on s (into tr->lit); false if none reaches. */
+static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_wanted)
+{
+	const struct prepared *p = tr->p;
+	const struct scene *sc = p->scene;
+	bool any = false;
+	for (size_t li = 0; li < sc->nlights; li++) {
+		struct lit *l = &tr->lit[li];
+		l->on = false;
+		vec3 lv = v3_sub(sc->lights[li].pos, s->pt);
+		double dist = v3_len(lv);
+		if (dist == 0)
+			continue;
+		l->dir = v3_scale(lv, 1.0 / dist);
+		double c = v3_dot(s->n, l->dir);
+		if (c == 0)
+			continue;
+		l->back = c < 0;
+		if (l->back && !back_wanted)
+			continue;
+		vec3 side = l->back ? v3_neg(s->n) : s->n;
+		l->color = sc->lights[li].color;
+		if ((p->features & FEAT_SHADOWS) && !sc->lights[li].shadowless)
+			l->color = light_through(tr, li, v3_madd(s->pt, side, s->eps), l->dir, dist, s->eps, s->med);
+		l->on = rgb_max(l->color) > 0;
+		any |= l->on;
+	}
+	return any;
+}
+
+/* One plain layer of a stack, evaluated at the surface. */
+struct layer {
+	const struct texture *t;
+	const struct finish *fin;
+	rgb pig;        /* the pigment's colour */
+	double opacity; /* 1 - filter - transmit: the share the surface terms get */
+	vec3 n;         /* the (perturbed) normal, facing the ray */
+	rgb above;      /* what the layers above let through */
+	rgb refl;       /* the reflection colour at this angle (before exponent) */
+};
+
+/* The reflection colour of finish f at a view whose incidence cosine is
+ * cv, for pigment pig; n_rel is the relative ior for fresnel. */
+static rgb reflection_color(const struct finish *f, rgb pig, double cv, double n_rel)
+{
+	rgb lo = f->reflection_min, hi = f->reflection_max;
+	double k;
+	if (f->reflection_fresnel)
+		k = shade_fresnel(cv, n_rel);
+	else
+		k = f->reflection_falloff == 1 ? 1 - cv : pow(1 - cv, f->reflection_falloff);
+	rgb r = rgb_add(lo, rgb_scale(rgb_add(hi, rgb_scale(lo, -1)), k));
+	if (f->reflection_metallic > 0)
+		r = rgb_mul(r, shade_metallic(pig, f->reflection_metallic, cv));
+	return r;
+}
+
+/* A ray of the transmitted light through s: refracted by the relative ior
+ * (eta = n1 / n2) or, under total internal reflection, mirrored. */
+static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double weight, const struct medium *after)
+{
+	const struct prepared *p = tr->p;
+	bool any;
+	double n1 = medium_ior(s->med), n2 = medium_ior(after);
+	const struct interior *in = s->in;
+	if ((p->features & FEAT_DISPERSION) && in->dispersion != 1 && n1 != n2) {
+		/* One ray per sample of the spectrum, each through the ior of its
+		 * wavelength, weighted by its colour. */
+		rgb sum = rgb_make(0, 0, 0);
+		int ns = in->dispersion_samples;
+		for (int i = 0; i < ns; i++) {
+			double ni = shade_dispersion_ior(in->ior, in->dispersion, i, ns);
+			double eta = s->leaving ? ni / n2 : n1 / ni;
+			vec3 d;
+			struct ray r;
+			rgb c;
+			if (shade_refract(s->dir, n, eta, &d)) {
+				r = (struct ray){v3_madd(s->pt, n, -s->eps), d};
+				c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFRACTED, weight / ns, after, &any);
+			} else {
+				r = (struct ray){v3_madd(s->pt, n, s->eps), v3_reflect(s->dir, n)};
+				c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight / ns, s->med, &any);
+			}
+			sum = rgb_add(sum, rgb_mul(c, shade_dispersion_color(i, ns)));
+		}
+		return sum;
+	}
+	vec3 d = s->dir;
+	if (n1 != n2 && !shade_refract(s->dir, n, n1 / n2, &d)) {
+		struct ray r = {v3_madd(s->pt, n, s->eps), v3_reflect(s->dir, n)};
+		return trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any);
+	}
+	struct ray r = {v3_madd(s->pt, s->n, -s->eps), d};
+	return trace_ray_in(tr, &r, s->depth + 1, RAY_REFRACTED, weight, after, &any);
+}
+
+/* The colour of the plain-texture stack t (t, t->next, ...) at s: each
+ * layer's ambient, emission and diffuse light scaled by its opacity, its
+ * highlights whole, both filtered by the layers above; the reflections of
+ * every layer under a see-through one; and what comes through them all. */
+static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct surface *s, double weight)
+{
+	const struct prepared *p = tr->p;
+	const struct scene *sc = p->scene;
+	unsigned feat = p->features;
+	struct layer L[MAX_LAYERS];
+	int nl = 0;
+	rgb filt = rgb_make(1, 1, 1);
+	bool back_wanted = (s->obj->flags & OBJ_DOUBLE_ILLUMINATE) != 0;
+	struct medium after = {0};
+	double n_rel = 1;
+	if (feat & FEAT_MEDIA) {
+		medium_cross(s->med, s->in, &after);
+		n_rel = medium_ior(&after) / medium_ior(s->med);
+	}
+	for (const struct texture *l = t; l && nl < MAX_LAYERS; l = l->next) {
+		const struct texture *pl = plain_of(l, s);
+		if (!pl)
+			break;
+		struct layer *y = &L[nl++];
+		y->t = pl;
+		y->fin = &pl->finish;
+		struct rgbft c = pigment_eval(pl->pigment, ctx_for(s, &pl->pigment->pat));
+		y->pig = rgb_of(c);
+		y->opacity = 1 - c.f - c.t;
+		y->n = s->n;
+		if ((feat & FEAT_NORMALS) && pl->normal)
+			y->n = normal_eval(pl->normal, s->n, ctx_for(s, &pl->normal->pat));
+		y->above = filt;
+		y->refl = rgb_make(0, 0, 0);
+		if ((feat & FEAT_REFLECTION) && (rgb_max(y->fin->reflection_max) > 0 || rgb_max(y->fin->reflection_min) > 0))
+			y->refl = reflection_color(y->fin, y->pig, fabs(v3_dot(s->dir, y->n)), n_rel);
+		back_wanted |= y->fin->diffuse_back != 0;
+		rgb lf = layer_filter(c);
+		if (y->fin->conserve_energy)
+			lf = rgb_mul(lf, rgb_make(1 - y->refl.r, 1 - y->refl.g, 1 - y->refl.b));
+		filt = rgb_mul(filt, lf);
+		if (rgb_max(filt) <= 0 || pl != l)
+			break;
+	}
+
+	rgb col = rgb_make(0, 0, 0);
+	for (int i = 0; i < nl; i++) {
+		const struct layer *y = &L[i];
+		rgb a = rgb_add(rgb_mul(y->fin->ambient, sc->gs.ambient_light), y->fin->emission);
+		col = rgb_add(col, rgb_mul(y->above, rgb_scale(rgb_mul(a, y->pig), y->opacity)));
+	}
+
+	if (sc->nlights && gather_lights(tr, s, back_wanted)) {
+		bool dbl = (s->obj->flags & OBJ_DOUBLE_ILLUMINATE) != 0;
+		for (size_t li = 0; li < sc->nlights; li++) {
+			const struct lit *lt = &tr->lit[li];
+			if (!lt->on)
+				continue;
+			for (int i = 0; i < nl; i++) {
+				const struct layer *y = &L[i];
+				const struct finish *f = y->fin;
+				vec3 n = lt->back ? v3_neg(y->n) : y->n;
+				double cosl = v3_dot(n, lt->dir);
+				if (cosl <= 0)
+					continue;
+				rgb acc = rgb_make(0, 0, 0);
+				double kd = lt->back && !dbl ? f->diffuse_back : f->diffuse;
+				if (kd != 0) {
+					double k = kd * (f->brilliance == 1.0 ? cosl : pow(cosl, f->brilliance));
+					if (f->crand > 0)
+						k -= f->crand * hash_uniform((uint32_t)(s->pt.x * 1e4), (uint32_t)(s->pt.y * 1e4),
+						                             (uint32_t)(s->pt.z * 1e4), 7) * kd;
+					rgb d = rgb_scale(y->pig, k * y->opacity);
+					if ((feat & FEAT_IRID) && f->irid != 0) {
+						double cv = fabs(v3_dot(s->dir, n));
+						rgb ir = shade_irid(f->irid, f->irid_thickness, (cosl + cv) / 2, rgb_make(0.70, 0.52, 0.48));
+						d = rgb_mul(d, rgb_make(1 + ir.r, 1 + ir.g, 1 + ir.b));
+					}
+					acc = rgb_add(acc, d);
+				}
+				if (!lt->back) {
+					if ((feat & FEAT_PHONG) && f->phong > 0) {
+						double c = v3_dot(v3_reflect(s->dir, n), lt->dir);
+						if (c > 0) {
+							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+							acc = rgb_add(acc, rgb_scale(hc, f->phong * pow(c, f->phong_size)));
+						}
+					}
+					if ((feat & FEAT_SPECULAR) && f->specular > 0) {
+						double c = v3_dot(n, v3_norm(v3_sub(lt->dir, s->dir)));
+						if (c > 0) {
+							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+							acc = rgb_add(acc, rgb_scale(hc, f->specular * pow(c, 1.0 / f->roughness)));
+						}
+					}
+				}
+				col = rgb_add(col, rgb_mul(y->above, rgb_mul(acc, lt->color)));
+			}
+		}
+	}
+
+	if (s->depth < p->max_depth) {
+		double bail = sc->gs.adc_bailout;
+		for (int i = 0; i < nl; i++) {
+			const struct layer *y = &L[i];
+			double w = weight * rgb_max(y->refl);
+			if (w <= bail)
+				continue;
+			struct ray rr = {v3_madd(s->pt, s->n, s->eps), v3_reflect(s->dir, y->n)};
+			bool any;
+			rgb rc = trace_ray_in(tr, &rr, s->depth + 1, RAY_REFLECTED, w, s->med, &any);
+			double e = y->fin->reflection_exponent;
+			if (e != 1)
+				rc = rgb_make(pow(fmax(rc.r, 0), 1 / e), pow(fmax(rc.g, 0), 1 / e), pow(fmax(rc.b, 0), 1 / e));
+			col = rgb_add(col, rgb_mul(rc, y->refl));
+		}
+		if ((feat & FEAT_TRANSPARENCY) && weight * rgb_max(filt) > bail)
+			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
+	}
+	return col;
+}
+
+/* The colour of texture t at s: patterned textures shade their entries in
+ * full and blend the results by the pattern (as POV-Ray documents and
+ * does); material maps take the entry the image's palette index names. */
+static rgb shade_texture(struct tracer *tr, const struct texture *t, const struct surface *s, double weight)
+{
+	if (!t)
+		return rgb_make(0, 0, 0);
+	if (t->kind == TEX_PLAIN || !t->map || t->map->n == 0)
+		return shade_layers(tr, t, s, weight);
+	const struct blend_map *m = t->map;
+	const struct pattern_ctx *ctx = ctx_for(s, &t->pat);
+	int lo, hi;
+	double w = 0;
+	if (t->kind == TEX_MATERIAL) {
+		struct rgbft c;
+		image_map_eval(&t->pat.img, pattern_point(&t->pat, ctx->p), &c, &lo);
+		hi = lo;
+	} else if (pattern_is_block(t->pat.kind)) {
+		lo = hi = (int)pattern_value(&t->pat, ctx);
+	} else {
+		blend_map_find(m, pattern_value(&t->pat, ctx), &lo, &hi, &w);
+	}
+	lo = lo < 0 ? 0 : lo >= m->n ? m->n - 1 : lo;
+	hi = hi < 0 ? 0 : hi >= m->n ? m->n - 1 : hi;
+	if (hi == lo || w <= 0)
+		return shade_texture(tr, m->e[lo].item, s, weight);
+	if (w >= 1)
+		return shade_texture(tr, m->e[hi].item, s, weight);
+	rgb a = shade_texture(tr, m->e[lo].item, s, weight * (1 - w));
+	rgb b = shade_texture(tr, m->e[hi].item, s, weight * w);
+	return rgb_add(rgb_scale(a, 1 - w), rgb_scale(b, w));
+}
+
+rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, double weight,
+                 const struct medium *med, bool *hit_anything)
+{
+	const struct prepared *p = tr->p;
+	const struct scene *sc = p->scene;
 	tr->stats.rays[kind]++;
 	struct hit h;
 	unsigned skip = kind == RAY_CAMERA ? OBJ_NO_IMAGE : kind == RAY_REFLECTED ? OBJ_NO_REFLECTION : 0;
+	const struct interior *fading = NULL;
+	if ((p->features & FEAT_FADE) && med && med->n) {
+		const struct interior *in = med->in[med->n - 1];
+		if (in->fade_distance > 0 && in->fade_power > 0)
+			fading = in;
+	}
 	if (!trace_closest(p, r, 0, INFINITY, skip, &h)) {
 		*hit_anything = false;
-		return rgb_of(s->background);
+		rgb bg = rgb_of(sc->background);
+		return fading ? rgb_mul(bg, shade_fade(fading, INFINITY)) : bg;
 	}
 	*hit_anything = true;
 	if (p->signature)
 		return signature_color(h.obj->id);
-	vec3 dir = v3_norm(r->dir);
-	vec3 pt = v3_madd(r->org, r->dir, h.t);
-	vec3 n = object_normal(h.obj, pt, &h);
+	struct surface s = {.obj = h.obj, .med = med, .depth = depth};
+	s.dir = v3_norm(r->dir);
+	s.pt = v3_madd(r->org, r->dir, h.t);
+	s.n = object_normal(h.obj, s.pt, &h);
 	/* Shade the side the ray sees. A ray tangent to the surface sees its
 	 * outside: there n.dir is rounding noise of either sign, and flipping
 	 * on noise would light the point from inside (speckles along the
 	 * tangent). 1e-9 is far above that noise (~1e-16 for unit vectors)
 	 * and far below any real incidence a pixel can show. */
-	if (v3_dot(n, dir) > 1e-9)
-		n = v3_neg(n);
-	double eps = trace_epsilon(pt, r->org);
-
+	if (v3_dot(s.n, s.dir) > 1e-9)
+		s.n = v3_neg(s.n);
+	s.eps = trace_epsilon(s.pt, r->org);
+	s.in = h.obj->interior ? h.obj->interior : &default_interior;
+	if (p->features & FEAT_MEDIA)
+		s.leaving = medium_has(med, s.in);
+	surface_contexts(&s, &h, (p->features & FEAT_UV) != 0);
 	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
-	if (!tex)
-		tex = h.obj->tex;
-	const struct finish *fin = &tex->finish;
-	struct pattern_ctx pctx = {.p = pt, .normal = n, .dir = dir, .noise_generator = 2};
-	rgb pig = rgb_of(pigment_eval(tex->pigment, &pctx));
-	rgb col = rgb_mul(rgb_mul(fin->ambient, s->gs.ambient_light), pig);
-	col = rgb_add(col, rgb_mul(fin->emission, pig));
-
-	vec3 refl = v3_reflect(dir, n);
-	unsigned feat = p->features;
-	for (size_t li = 0; li < s->nlights; li++) {
-		const struct light *l = &s->lights[li];
-		vec3 lv = v3_sub(l->pos, pt);
-		double dist = v3_len(lv);
-		if (dist == 0)
-			continue;
-		vec3 ldir = v3_scale(lv, 1.0 / dist);
-		double cosi = v3_dot(n, ldir);
-		/* The side of the surface the light is on: the one the ray sees,
-		 * or with double_illuminate the other one too. */
-		vec3 ln = n;
-		bool back = false;
-		if (cosi <= 0) {
-			if (!(h.obj->flags & OBJ_DOUBLE_ILLUMINATE) || cosi == 0)
-				continue;
-			ln = v3_neg(n);
-			cosi = -cosi;
-			back = true;
-		}
-		if ((feat & FEAT_SHADOWS) && !l->shadowless && shadowed(tr, li, v3_madd(pt, ln, eps), ldir, dist, eps))
-			continue;
-		rgb lc = l->color;
-		if (fin->diffuse > 0) {
-			double k = fin->diffuse * (fin->brilliance == 1.0 ? cosi : pow(cosi, fin->brilliance));
-			col = rgb_add(col, rgb_scale(rgb_mul(lc, pig), k));
-		}
-		if (back)
-			continue; /* the lit back side shows no highlight toward the viewer */
-		if ((feat & FEAT_PHONG) && fin->phong > 0) {
-			double c = v3_dot(refl, ldir);
-			if (c > 0) {
-				double k = fin->phong * pow(c, fin->phong_size);
-				rgb hc = fin->metallic ? rgb_mul(lc, pig) : lc;
-				col = rgb_add(col, rgb_scale(hc, k));
-			}
-		}
-		if ((feat & FEAT_SPECULAR) && fin->specular > 0) {
-			vec3 hv = v3_norm(v3_sub(ldir, dir));
-			double c = v3_dot(n, hv);
-			if (c > 0) {
-				double k = fin->specular * pow(c, 1.0 / fin->roughness);
-				rgb hc = fin->metallic ? rgb_mul(lc, pig) : lc;
-				col = rgb_add(col, rgb_scale(hc, k));
-			}
-		}
-	}
-
-	if ((feat & FEAT_REFLECTION) && rgb_max(fin->reflection_max) > 0 && depth < p->max_depth) {
-		struct ray rr = {v3_madd(pt, n, eps), refl};
-		bool any;
-		rgb rc = trace_ray(tr, &rr, depth + 1, RAY_REFLECTED, &any);
-		col = rgb_add(col, rgb_mul(rc, fin->reflection_max));
-	}
+	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
+	if (fading)
+		col = rgb_mul(col, shade_fade(fading, h.t * v3_len(r->dir)));
 	return col;
+}
+
+rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)
+{
+	const struct medium *m = tr->p->camera_medium.n ? &tr->p->camera_medium : NULL;
+	return trace_ray_in(tr, r, depth, kind, 1.0, m, hit_anything);
 }

@@ -1,6 +1,7 @@
 /* trace.h: casting rays through a prepared scene and shading what they hit
- * (Whitted: direct light with shadows, Phong-style highlights, mirror
- * reflection). One tracer per thread: it holds that thread's statistics and
+ * (Whitted: direct light through transparent shadows, POV-Ray's finish
+ * terms, reflection, refraction through nested interiors, layered and
+ * patterned textures; the formulas are in shade.c). One tracer per thread: it holds that thread's statistics and
  * scratch, so the per-ray path allocates nothing and shares no writes. */
 #ifndef LUCENT_TRACE_H
 #define LUCENT_TRACE_H
@@ -8,10 +9,13 @@
 #include "render/prepare.h"
 #include "render/stats.h"
 
+struct lit;
+
 struct tracer {
 	const struct prepared *p;
 	struct stats stats;
 	const struct object **last_blocker; /* per light: the object that last shadowed it */
+	struct lit *lit;                     /* per light: scratch for one surface's lighting */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);
@@ -25,6 +29,11 @@ bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, d
  * bounces so far (camera rays: 1). *hit_anything tells if an object (not
  * the background) was seen, for the alpha channel. */
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything);
+/* The same for a secondary ray: `weight` is how much its colour can still
+ * change the pixel (rays below adc_bailout are not traced by the caller),
+ * `med` the interiors it travels in (NULL: none). */
+rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, double weight,
+                 const struct medium *med, bool *hit_anything);
 
 /* The offset that keeps a secondary ray from finding its own surface: a
  * relative tolerance on the magnitude of the coordinates involved, so the

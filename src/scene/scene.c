@@ -12,6 +12,7 @@ struct scene *scene_new(void)
 	s->gs.max_trace_level = 5;
 	s->gs.adc_bailout = 1.0 / 255.0;
 	s->gs.ambient_light = rgb_make(1, 1, 1);
+	s->gs.irid_wavelength = rgb_make(0.25, 0.18, 0.14);
 	s->version = 3.7;
 	return s;
 }

@@ -17,6 +17,7 @@ struct global_settings {
 	int max_trace_level;
 	double adc_bailout;
 	rgb ambient_light;
+	rgb irid_wavelength;   /* <0.25, 0.18, 0.14>; read but, as in POV-Ray 3.7, without effect */
 };
 
 struct scene {

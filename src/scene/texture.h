@@ -104,6 +104,10 @@ struct finish {
 	double reflection_metallic;  /* 0 */
 	bool conserve_energy;
 	double irid, irid_thickness, irid_turbulence;
+	/* The pre-3.1 places of interior items, accepted with a warning as
+	 * POV-Ray does: 0 when not given; prepare moves them into the
+	 * interior of objects that have none of their own. */
+	double legacy_ior, legacy_caustics;
 };
 
 struct finish finish_default(void);
