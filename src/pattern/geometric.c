@@ -91,16 +91,17 @@ PATTERN_FN(brick)
 }
 
 /* The six pyramids around the half-axes: +x 0, +y 1, +z 2, -x 3, -y 4,
- * -z 5; the largest magnitude wins, x before y before z on ties. */
+ * -z 5. On a tie the first of that order wins (measured: (-1, 1, 0) is 1,
+ * (-1, 0, 1) is 2, (-1, -1, 0) is 3). */
 PATTERN_FN(cubic)
 {
 	(void)pt; (void)ctx;
-	double ax = fabs(q.x), ay = fabs(q.y), az = fabs(q.z);
-	if (ax >= ay && ax >= az)
-		return q.x >= 0 ? 0 : 3;
-	if (ay >= az)
-		return q.y >= 0 ? 1 : 4;
-	return q.z >= 0 ? 2 : 5;
+	double c[6] = {q.x, q.y, q.z, -q.x, -q.y, -q.z};
+	int best = 0;
+	for (int i = 1; i < 6; i++)
+		if (c[i] > c[best])
+			best = i;
+	return best;
 }
 
 /* Unit squares in the x-z plane in four colours, each square's four

@@ -85,6 +85,7 @@ struct fractal {
 	int iterations;
 	int exponent;                /* 2..33 */
 	int magnet_type;             /* magnet: 1 or 2 */
+	bool magnet_julia;           /* magnet: the julia form (c the constant), else the mandel form */
 	double c[2];                 /* julia: the complex constant */
 	int interior_type, exterior_type;
 	double interior_factor, exterior_factor;
