@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+static const double PI = 3.14159265358979323846;
+
 static const char *const names[PAT__COUNT] = {
 	[PAT_NONE] = "none", [PAT_CHECKER] = "checker", [PAT_HEXAGON] = "hexagon", [PAT_BRICK] = "brick",
 	[PAT_OBJECT] = "object", [PAT_CUBIC] = "cubic", [PAT_SQUARE] = "square", [PAT_TRIANGULAR] = "triangular",
@@ -47,17 +49,80 @@ bool pattern_is_block(enum pattern_kind k)
 	return pattern_block_entries(k) > 0;
 }
 
+/* The wave type a kind uses when none is written: POV-Ray gives marble,
+ * wood, spiral1 and spiral2 a triangle wave (measured: `ramp_wave` changes
+ * their function{pattern{}} values, and for no other kind). */
+static enum wave_type default_wave(enum pattern_kind k)
+{
+	switch (k) {
+	case PAT_MARBLE: case PAT_WOOD: case PAT_SPIRAL1: case PAT_SPIRAL2: return WAVE_TRIANGLE;
+	default: return WAVE_RAMP;
+	}
+}
+
 struct pattern pattern_make(enum pattern_kind k)
 {
 	struct pattern pt;
 	memset(&pt, 0, sizeof pt);
 	pt.kind = k;
 	pt.frequency = 1.0;
-	pt.wave = WAVE_RAMP;
+	pt.wave = default_wave(k);
 	pt.wave_exponent = 1.0;
 	pt.turb.octaves = 6;
 	pt.turb.omega = 0.5;
 	pt.turb.lambda = 2.0;
+	/* the kinds' own parameters, POV-Ray's defaults (the manual) */
+	switch (k) {
+	case PAT_BRICK:
+		pt.vec = v3(8, 3, 4.5);          /* brick_size */
+		pt.vec2 = v3(0.5, 0, 0);         /* mortar */
+		break;
+	case PAT_QUILTED:
+		pt.f[0] = 1.0;                   /* control0 */
+		pt.f[1] = 1.0;                   /* control1 */
+		break;
+	case PAT_AGATE:
+		pt.f[0] = 1.0;                   /* agate_turb */
+		break;
+	case PAT_CRACKLE:
+		pt.form = v3(-1, 1, 0);
+		pt.f[0] = 2.0;                   /* metric */
+		pt.f[1] = 0.0;                   /* offset */
+		break;
+	case PAT_FACETS:
+		pt.vec = v3(0.1, 0, 0);          /* size, coords */
+		break;
+	case PAT_GRADIENT:
+		pt.vec = v3(1, 0, 0);
+		break;
+	case PAT_SLOPE:
+		pt.vec = v3(0, 1, 0);
+		pt.f[0] = 0.0; pt.f[1] = 1.0;   /* slope low, high */
+		pt.f[2] = 0.0; pt.f[3] = 0.0;   /* altitude low, high (none) */
+		break;
+	case PAT_SPIRAL1: case PAT_SPIRAL2:
+		pt.n[0] = 1;                     /* arms (the syntax requires them) */
+		break;
+	case PAT_JULIA: case PAT_MANDEL: case PAT_MAGNET:
+		pt.fractal.iterations = 20;
+		pt.fractal.exponent = 2;
+		pt.fractal.magnet_type = 1;
+		pt.fractal.interior_type = 0;
+		pt.fractal.exterior_type = 1;
+		pt.fractal.interior_factor = 1.0;
+		pt.fractal.exterior_factor = 1.0;
+		break;
+	case PAT_TILING:
+		pt.n[0] = 1;                     /* tiling type */
+		break;
+	case PAT_PAVEMENT:
+		pt.n[0] = 3;                     /* number_of_sides */
+		pt.n[1] = 1;                     /* number_of_tiles */
+		pt.n[2] = 1;                     /* pattern */
+		break;
+	default:
+		break;
+	}
 	return pt;
 }
 
@@ -177,12 +242,55 @@ double pattern_raw(const struct pattern *pt, vec3 q, const struct pattern_ctx *c
 	return 0;
 }
 
+/* Frequency, phase and the wave type applied to a continuous pattern's raw
+ * value v, as POV-Ray does it (every step measured with function{pattern{}}):
+ * unless the frequency is 0 (which turns frequency and phase off),
+ * v*frequency + phase is reduced modulo 1.00001, not 1, so that 1 survives
+ * (gradient x at x = 1 gives 1, frequency 2 at x = 1 gives 0.99999); a
+ * negative result is then moved into [0, 1) by its floor. Frequency and
+ * phase are single-precision numbers in POV-Ray: `phase 0.3` adds
+ * 0.300000011920929. */
+static double apply_wave(const struct pattern *pt, double v)
+{
+	float freq = (float)pt->frequency;
+	if (freq != 0.0f)
+		v = fmod(v * freq + (float)pt->phase, 1.00001);
+	if (v < 0.0)
+		v -= floor(v);
+	switch (pt->wave) {
+	case WAVE_RAMP:
+		break;
+	case WAVE_TRIANGLE:
+		v *= 2.0;
+		if (v > 1.0)
+			v = 2.0 - v;
+		break;
+	case WAVE_SINE:
+		v = (sin(v * (2.0 * PI)) + 1.0) * 0.5;
+		break;
+	case WAVE_SCALLOP:
+		v = fabs(sin(v * PI));
+		break;
+	case WAVE_CUBIC:
+		v = v * v * (3.0 - 2.0 * v);
+		break;
+	case WAVE_POLY:
+		v = pow(v, (float)pt->wave_exponent);   /* single precision too */
+		break;
+	}
+	return v;
+}
+
+double pattern_wave(const struct pattern *pt, double v)
+{
+	return apply_wave(pt, v);
+}
+
 double pattern_value(const struct pattern *pt, const struct pattern_ctx *ctx)
 {
 	vec3 q = pattern_point(pt, ctx->p);
 	double v = pattern_raw(pt, q, ctx);
 	if (pattern_is_block(pt->kind))
 		return v;
-	/* frequency, phase and the wave type: IN PROGRESS */
-	return v;
+	return apply_wave(pt, v);
 }

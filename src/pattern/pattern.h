@@ -170,6 +170,9 @@ vec3 pattern_point_ctx(const struct pattern *pt, vec3 p, const struct pattern_ct
 /* The pattern's value at ctx: an index for block patterns, [0, 1] for the
  * others (after frequency, phase and wave type). */
 double pattern_value(const struct pattern *pt, const struct pattern_ctx *ctx);
+/* Frequency, phase and the wave type applied to a raw value v of pt's
+ * kind (what pattern_value does after pattern_raw for continuous kinds). */
+double pattern_wave(const struct pattern *pt, double v);
 /* The raw value of the kind at pattern-space point q, before frequency,
  * phase and the wave (used by pattern_value and by the normal code). */
 double pattern_raw(const struct pattern *pt, vec3 q, const struct pattern_ctx *ctx);
