@@ -214,7 +214,7 @@ bool builtin_is_function(enum kw k)
 	case KW_DIMENSION_SIZE: case KW_FILE_EXISTS: case KW_INSIDE: case KW_VCROSS: case KW_VNORMALIZE:
 	case KW_VROTATE: case KW_VAXIS_ROTATE: case KW_MIN_EXTENT: case KW_MAX_EXTENT: case KW_TRACE:
 	case KW_CHR: case KW_CONCAT: case KW_STR: case KW_STRLWR: case KW_STRUPR: case KW_SUBSTR:
-	case KW_VSTR: case KW_DATETIME: case KW_NOW:
+	case KW_VSTR: case KW_DATETIME: case KW_NOW: case KW_VTURBULENCE:
 		return true;
 	default:
 		return false;
@@ -303,6 +303,21 @@ struct value builtin_call(struct parser *p)
 		vec3 a = arg_vec3(p, name);
 		comma(p);
 		r = val_float(v3_dot(a, arg_vec3(p, name)), at);
+		break;
+	}
+	case KW_VTURBULENCE: {
+		/* vturbulence(Lambda, Omega, Octaves, A): the turbulence vector
+		 * of the default noise generator, as warp { turbulence } uses. */
+		struct turbulence tb;
+		tb.lambda = arg_float(p, name);
+		comma(p);
+		tb.omega = arg_float(p, name);
+		comma(p);
+		tb.octaves = (int)arg_float(p, name);
+		comma(p);
+		vec3 a = arg_vec3(p, name);
+		tb.amount = v3(1, 1, 1);
+		r = vec3_value(turbulence3(a, &tb, 2), at);
 		break;
 	}
 	case KW_VLENGTH: {
