@@ -262,6 +262,14 @@ const struct token *parse_peek_cont(struct parser *p)
 	return &p->cur;
 }
 
+const struct token *parse_peek_raw(struct parser *p)
+{
+	if (p->have_cur)
+		return &p->cur;
+	const struct frame *f = &p->frames[p->nframes - 1];
+	return f->pos < f->end ? &f->toks[f->pos] : NULL;
+}
+
 void parse_advance(struct parser *p)
 {
 	drop_sentinel(p);

@@ -120,6 +120,10 @@ const struct token *parse_peek(struct parser *p);
  * yet: it shows as TOK_HASH, so `#declare A = 1; #declare B = A;` and
  * `#if (A) #declare ...` act in order. */
 const struct token *parse_peek_cont(struct parser *p);
+/* The next token as it stands, without running a directive or a macro
+ * call first: the lookahead if one was taken, else the top frame's next
+ * token (NULL at the frame's end). */
+const struct token *parse_peek_raw(struct parser *p);
 void parse_advance(struct parser *p);
 bool parse_is(struct parser *p, enum tok_kind k);
 bool parse_is_kw(struct parser *p, enum kw k);

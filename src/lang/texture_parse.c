@@ -1480,9 +1480,14 @@ struct texture *parse_texture_value(struct parser *p)
 {
 	struct texture **h = holder_new(sizeof *h);
 	int slot = parse_own(p, h, parse_free_texture_holder);
-	do
+	/* The next token is looked at raw: a macro call after the
+	 * declaration (which may use the name being declared) must not run
+	 * before the declaration is complete. */
+	const struct token *t;
+	do {
 		parse_texture_layer(p, h);
-	while (parse_peek_cont(p)->kind == TOK_KEYWORD && parse_peek_cont(p)->kw == KW_TEXTURE);
+		t = parse_peek_raw(p);
+	} while (t && t->kind == TOK_KEYWORD && t->kw == KW_TEXTURE);
 	struct texture *r = *h;
 	*h = NULL;
 	parse_release(p, slot);
