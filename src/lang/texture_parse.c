@@ -142,22 +142,6 @@ static struct rgbft value_color(struct parser *p, struct value *v)
 	return (struct rgbft){v->v[0], v->v[1], v->v[2], v->v[3], v->v[4]};
 }
 
-/* The colours POV-Ray gives the entries of a block pattern's list that
- * are not written (measured with function { pigment { ... } }). */
-static struct rgbft block_default_color(enum pattern_kind k, int i)
-{
-	static const struct rgbft red = {1, 0, 0, 0, 0}, green = {0, 1, 0, 0, 0}, blue = {0, 0, 1, 0, 0},
-	                          yellow = {1, 1, 0, 0, 0}, cyan = {0, 1, 1, 0, 0}, magenta = {1, 0, 1, 0, 0},
-	                          grey = {0.5, 0.5, 0.5, 0, 0}, brick = {0.6, 0.15, 0.15, 0, 0};
-	static const struct rgbft six[6] = {red, green, blue, yellow, cyan, magenta};
-	switch (k) {
-	case PAT_CHECKER: case PAT_OBJECT: return i == 0 ? blue : green;
-	case PAT_HEXAGON: return i == 0 ? blue : i == 1 ? green : red;
-	case PAT_BRICK: return i == 0 ? grey : brick;
-	default: return six[i % 6];
-	}
-}
-
 /* ---- patterns ---- */
 
 /* The pattern a keyword names, or PAT_NONE. */
@@ -726,7 +710,7 @@ static void finish_list(struct parser *p, struct blend_map *m, const struct patt
 		struct map_entry *e = &m->e[i];
 		memset(e, 0, sizeof *e);
 		e->value = i;
-		e->color = block_default_color(pt->kind, i);
+		e->color = pattern_block_default(pt->kind, i);
 		if (m->kind == MAP_PIGMENT) {
 			struct pigment *pg = pigment_new();
 			pg->color = e->color;

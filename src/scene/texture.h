@@ -170,6 +170,9 @@ void texture_prepare(struct texture *t);
 
 /* ---- evaluation (texture_eval.c) ---- */
 
+/* Entry i of the colour list a block pattern of kind k uses where the
+ * scene gives none (or gives fewer entries than the pattern takes). */
+struct rgbft pattern_block_default(enum pattern_kind k, int i);
 /* The pigment's colour at ctx. */
 struct rgbft pigment_eval(const struct pigment *pg, const struct pattern_ctx *ctx);
 /* The normal n (unit, world space) perturbed by nm at ctx; unit. */

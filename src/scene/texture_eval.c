@@ -44,7 +44,8 @@ BMAP(map_wood, {0.6, 0.666f, 0.312f, 0.2f}, {0.6, 0.4f, 0.1333f, 0.066f}, {1.0, 
 BMAP(map_radial, {0.0, 0, 1, 1}, {0.333, 1, 1, 0}, {0.666, 1, 0, 1}, {1.0, 0, 1, 1});
 BMAP(map_mandel, {0.001, 0, 0, 0}, {0.001, 0, 1, 1}, {0.012, 1, 1, 0}, {0.015, 1, 0, 1}, {0.1, 0, 1, 1});
 
-/* Block patterns' colours when no list is given. */
+/* Block patterns' colours for the entries a scene does not write (measured
+ * with function { pigment { ... } }). */
 static const float block_blue[3] = {0, 0, 1}, block_green[3] = {0, 1, 0}, block_red[3] = {1, 0, 0};
 static const float *const list_checker[] = {block_blue, block_green};
 static const float *const list_hexagon[] = {block_blue, block_green, block_red};
@@ -75,7 +76,7 @@ static struct rgbft rgbft_of(const float *c)
 	return r;
 }
 
-static struct rgbft block_default(enum pattern_kind k, int i)
+struct rgbft pattern_block_default(enum pattern_kind k, int i)
 {
 	const float *const *list;
 	switch (k) {
@@ -195,7 +196,7 @@ struct rgbft pigment_eval(const struct pigment *pg, const struct pattern_ctx *ct
 	if (pattern_is_block(pt->kind)) {
 		int n = m ? m->n : pattern_block_entries(pt->kind);
 		int i = block_index(v, n);
-		return m ? entry_color(m, i, ctx) : block_default(pt->kind, i);
+		return m ? entry_color(m, i, ctx) : pattern_block_default(pt->kind, i);
 	}
 	if (!m || m->n == 0)
 		return to_float(builtin_lookup(builtin_map(pt->kind), v));
