@@ -33,7 +33,6 @@ static struct token raw_expect(struct parser *p, enum tok_kind k, const char *wh
 
 /* A condition is true when it is not zero; POV-Ray counts values within
  * 1e-10 of zero as zero, to forgive round-off. */
-static bool truthy(double x) { return fabs(x) > 1e-10; }
 
 /* A float inside a directive's parentheses, where comparisons and
  * logical operators bind (see struct parser's rel_ok). */
@@ -138,14 +137,14 @@ static void skip_false_branch(struct parser *p, struct srcpos open)
 		}
 		if (k == KW_ELSE)
 			return;
-		if (truthy(paren_float(p))) /* #elseif */
+		if (parse_truthy(paren_float(p))) /* #elseif */
 			return;
 	}
 }
 
 static void dir_if(struct parser *p, struct srcpos at)
 {
-	bool c = truthy(paren_float(p));
+	bool c = parse_truthy(paren_float(p));
 	push_cond(p, COND_IF, at);
 	if (!c)
 		skip_false_branch(p, at);
@@ -265,7 +264,7 @@ static void dir_break(struct parser *p, struct srcpos at)
 
 static void dir_while(struct parser *p, struct srcpos at, size_t hash)
 {
-	if (truthy(paren_float(p))) {
+	if (parse_truthy(paren_float(p))) {
 		struct cond *c = push_cond(p, COND_WHILE, at);
 		c->loop = hash;
 	} else {

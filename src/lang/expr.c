@@ -70,22 +70,28 @@ static enum op binop(enum tok_kind k, bool in_vector, bool rel_ok)
 /* POV-Ray's tolerance for equality and truth: values within 1e-10 of
  * each other are equal, and within 1e-10 of zero are false. */
 #define EQ_EPSILON 1e-10
-static bool truthy(double x) { return fabs(x) > EQ_EPSILON; }
+bool parse_truthy(double x) { return fabs(x) > EQ_EPSILON; }
 
-static double compare(enum op op, double x, double y)
+double parse_compare(enum parse_cmp op, double x, double y)
 {
 	switch (op) {
-	case OP_OR: return truthy(x) || truthy(y);
-	case OP_AND: return truthy(x) && truthy(y);
+	case CMP_OR: return parse_truthy(x) || parse_truthy(y);
+	case CMP_AND: return parse_truthy(x) && parse_truthy(y);
 	/* < and > are exact; the others allow the tolerance. */
-	case OP_LT: return x < y;
-	case OP_LE: return x <= y + EQ_EPSILON;
-	case OP_EQ: return fabs(x - y) <= EQ_EPSILON;
-	case OP_GE: return x >= y - EQ_EPSILON;
-	case OP_GT: return x > y;
-	case OP_NE: return fabs(x - y) > EQ_EPSILON;
-	default: return 0;
+	case CMP_LT: return x < y;
+	case CMP_LE: return x <= y + EQ_EPSILON;
+	case CMP_EQ: return fabs(x - y) <= EQ_EPSILON;
+	case CMP_GE: return x >= y - EQ_EPSILON;
+	case CMP_GT: return x > y;
+	case CMP_NE: return fabs(x - y) > EQ_EPSILON;
 	}
+	return 0;
+}
+
+/* The operators OP_OR .. OP_NE in parse_cmp's order. */
+static double compare(enum op op, double x, double y)
+{
+	return parse_compare((enum parse_cmp)(op - OP_OR), x, y);
 }
 
 static const char *op_name(enum op op)
@@ -158,7 +164,7 @@ static struct value parse_cond(struct parser *p, bool in_vector)
 	struct value c = parse_binary(p, 1, in_vector);
 	if (p->rel_ok && parse_peek_cont(p)->kind == TOK_QUESTION) {
 		need_float(p, &c, "the condition of '?:'");
-		c.v[0] = truthy(c.v[0]);
+		c.v[0] = parse_truthy(c.v[0]);
 		parse_advance(p);
 		struct value a = parse_cond(p, in_vector);
 		parse_expect(p, TOK_COLON);
@@ -229,6 +235,28 @@ static double srgb_decode(double v)
 	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
 }
 
+void parse_keyword_color(enum kw k, const double *v, int n, bool is_float, double c[5])
+{
+	double w[5];
+	for (int i = 0; i < 5; i++)
+		w[i] = i < n ? v[i] : is_float ? v[0] : 0;
+	c[0] = w[0];
+	c[1] = w[1];
+	c[2] = w[2];
+	c[3] = c[4] = 0;
+	if (k == KW_RGBF || k == KW_SRGBF)
+		c[3] = w[3];
+	else if (k == KW_RGBT || k == KW_SRGBT)
+		c[4] = w[3];
+	else if (k == KW_RGBFT || k == KW_SRGBFT) {
+		c[3] = w[3];
+		c[4] = w[4];
+	}
+	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
+		for (int i = 0; i < 3; i++)
+			c[i] = srgb_decode(c[i]);
+}
+
 static int color_component(enum kw k);
 
 /* Trailing 'red F', 'transmit F' ... that set one component of c. */
@@ -255,20 +283,8 @@ static struct value parse_color_keyword(struct parser *p, enum kw k)
 	parse_advance(p);
 	struct value e = parse_binary(p, 4, false);
 	need_numeric(p, &e, kw_names[k]);
-	int want = (k == KW_RGB || k == KW_SRGB) ? 3 : (k == KW_RGBFT || k == KW_SRGBFT) ? 5 : 4;
-	val_widen(&e, want);
-	double c[5] = {e.v[0], e.v[1], e.v[2], 0, 0};
-	if (k == KW_RGBF || k == KW_SRGBF)
-		c[3] = e.v[3];
-	else if (k == KW_RGBT || k == KW_SRGBT)
-		c[4] = e.v[3];
-	else if (k == KW_RGBFT || k == KW_SRGBFT) {
-		c[3] = e.v[3];
-		c[4] = e.v[4];
-	}
-	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
-		for (int i = 0; i < 3; i++)
-			c[i] = srgb_decode(c[i]);
+	double c[5];
+	parse_keyword_color(k, e.v, e.n, e.kind == VAL_FLOAT, c);
 	struct value r = val_vector(5, c, VAL_COLOR, at);
 	color_components(p, &r);
 	return r;
@@ -555,7 +571,7 @@ static struct value parse_unary(struct parser *p)
 				v.v[i] = -v.v[i];
 		if (k == TOK_BANG)
 			for (int i = 0; i < v.n; i++)
-				v.v[i] = !truthy(v.v[i]);
+				v.v[i] = !parse_truthy(v.v[i]);
 		v.pos = at;
 		return v;
 	}

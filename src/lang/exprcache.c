@@ -29,7 +29,7 @@ enum xop {
 	X_VAR,      /* push the float bound to name */
 	X_NEG, X_NOT,
 	X_ADD, X_SUB, X_MUL, X_DIV,
-	X_LT, X_LE, X_EQ, X_GE, X_GT, X_NE, X_AND, X_OR,
+	X_OR, X_AND, X_LT, X_LE, X_EQ, X_GE, X_GT, X_NE, /* in enum parse_cmp's order */
 	X_JZ,       /* pop; if false, jump to i */
 	X_JMP,      /* jump to i */
 	X_F1, X_F2, /* built-in math function of 1 or 2 arguments */
@@ -449,10 +449,6 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 
 /* ---- running ---- */
 
-/* POV-Ray's tolerance for equality and truth, as in expr.c. */
-#define EQ_EPSILON 1e-10
-static bool truthy(double x) { return fabs(x) > EQ_EPSILON; }
-
 /* A value on the stack: a float, vector (2..5) or colour (5). */
 struct xval {
 	double v[5];
@@ -462,16 +458,7 @@ struct xval {
 
 static double compare(enum xop op, double x, double y)
 {
-	switch (op) {
-	case X_OR: return truthy(x) || truthy(y);
-	case X_AND: return truthy(x) && truthy(y);
-	case X_LT: return x < y;
-	case X_LE: return x <= y + EQ_EPSILON;
-	case X_EQ: return fabs(x - y) <= EQ_EPSILON;
-	case X_GE: return x >= y - EQ_EPSILON;
-	case X_GT: return x > y;
-	default: return fabs(x - y) > EQ_EPSILON; /* X_NE */
-	}
+	return parse_compare((enum parse_cmp)(op - X_OR), x, y);
 }
 
 /* a := a op b, with expr.c's widening (a float fills every component,
@@ -519,29 +506,11 @@ static bool binary_op(enum xop op, struct xval *a, const struct xval *b)
 	return true;
 }
 
-static double srgb_decode(double v)
-{
-	return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
-}
-
 /* expr.c's parse_color_keyword on an evaluated operand. */
 static void make_color(enum kw k, struct xval *x)
 {
-	int want = (k == KW_RGB || k == KW_SRGB) ? 3 : (k == KW_RGBFT || k == KW_SRGBFT) ? 5 : 4;
-	for (int i = x->n; i < want; i++)
-		x->v[i] = x->kind == VAL_FLOAT ? x->v[0] : 0;
-	double c[5] = {x->v[0], x->v[1], x->v[2], 0, 0};
-	if (k == KW_RGBF || k == KW_SRGBF)
-		c[3] = x->v[3];
-	else if (k == KW_RGBT || k == KW_SRGBT)
-		c[4] = x->v[3];
-	else if (k == KW_RGBFT || k == KW_SRGBFT) {
-		c[3] = x->v[3];
-		c[4] = x->v[4];
-	}
-	if (k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT)
-		for (int i = 0; i < 3; i++)
-			c[i] = srgb_decode(c[i]);
+	double c[5];
+	parse_keyword_color(k, x->v, x->n, x->kind == VAL_FLOAT, c);
 	memcpy(x->v, c, sizeof c);
 	x->n = 5;
 	x->kind = VAL_COLOR;
@@ -593,7 +562,7 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 		case X_NEG: case X_NOT: {
 			struct xval *a = &st[sp - 1];
 			for (int i = 0; i < a->n; i++)
-				a->v[i] = in->op == X_NEG ? -a->v[i] : !truthy(a->v[i]);
+				a->v[i] = in->op == X_NEG ? -a->v[i] : !parse_truthy(a->v[i]);
 			break;
 		}
 		case X_ADD: case X_SUB: case X_MUL: case X_DIV:
@@ -606,7 +575,7 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 			sp--;
 			if (st[sp].kind != VAL_FLOAT)
 				goto fail;
-			if (!truthy(st[sp].v[0]))
+			if (!parse_truthy(st[sp].v[0]))
 				pc = in->i - 1;
 			break;
 		case X_JMP: pc = in->i - 1; break;

@@ -210,6 +210,16 @@ const struct math_fn *builtin_math_fn(enum kw k);
  * identifier and its indices. */
 bool parse_defined(struct parser *p);
 struct value builtin_call(struct parser *p);
+/* POV-Ray's comparison and logic operators (expr.c), in one order that
+ * the expression parser and the compiled expressions (exprcache.c) share:
+ * values within 1e-10 are equal, and within 1e-10 of zero are false. */
+enum parse_cmp { CMP_OR, CMP_AND, CMP_LT, CMP_LE, CMP_EQ, CMP_GE, CMP_GT, CMP_NE };
+bool parse_truthy(double x);
+double parse_compare(enum parse_cmp op, double x, double y);
+/* The colour the keyword k (rgb, rgbf, rgbt, rgbft, srgb...) makes of the
+ * operand v[0..n) (a float, is_float, fills every component; a vector is
+ * padded with zeros), into c[5]. */
+void parse_keyword_color(enum kw k, const double *v, int n, bool is_float, double c[5]);
 /* Typed operands for built-ins and statements. */
 void parse_need_float(struct parser *p, const struct value *v, const char *what);
 void parse_need_numeric(struct parser *p, const struct value *v, const char *what);
