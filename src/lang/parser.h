@@ -277,6 +277,9 @@ struct texture *parse_layer_onto(struct texture *top, struct texture *under);
 /* texture { } { texture { } } as a declared value (layered when several
  * follow); the caller owns the result. */
 struct texture *parse_texture_value(struct parser *p);
+/* pigment { } and normal { } as declared values; the caller owns them. */
+struct pigment *parse_pigment_value(struct parser *p);
+struct normal *parse_normal_value(struct parser *p);
 void parse_pigment(struct parser *p, struct pigment **pig);
 /* normal { }: replaces or modifies *nrm (NULL: none yet). */
 void parse_normal(struct parser *p, struct normal **nrm);

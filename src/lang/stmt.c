@@ -257,18 +257,6 @@ static struct array *parse_array(struct parser *p)
 
 static void free_pigment_cb(void *x) { free(x); }
 
-static void free_pigment_holder(void *h)
-{
-	pigment_unref(*(struct pigment **)h);
-	free(h);
-}
-
-static void free_normal_holder(void *h)
-{
-	normal_unref(*(struct normal **)h);
-	free(h);
-}
-
 static void free_interior_holder(void *h)
 {
 	interior_unref(*(struct interior **)h);
@@ -326,18 +314,10 @@ static bool item_value(struct parser *p, struct value *out)
 		out->kind = VAL_FUNCTION;
 		out->fn = parse_function(p);
 		return true;
-	case KW_PIGMENT: {
-		struct pigment **pig = calloc(1, sizeof *pig);
-		if (!pig) abort();
-		*pig = pigment_new();
-		int slot = parse_own(p, pig, free_pigment_holder);
-		parse_pigment(p, pig);
-		parse_release(p, slot);
+	case KW_PIGMENT:
 		out->kind = VAL_PIGMENT;
-		out->pig = *pig;
-		free(pig);
+		out->pig = parse_pigment_value(p);
 		return true;
-	}
 	case KW_FINISH: {
 		struct finish *f = malloc(sizeof *f);
 		if (!f) abort();
@@ -353,18 +333,10 @@ static bool item_value(struct parser *p, struct value *out)
 		out->kind = VAL_TEXTURE;
 		out->tex = parse_texture_value(p);
 		return true;
-	case KW_NORMAL: {
-		struct normal **h = calloc(1, sizeof *h);
-		if (!h) abort();
-		int slot = parse_own(p, h, free_normal_holder);
-		parse_normal(p, h);
+	case KW_NORMAL:
 		out->kind = VAL_NORMAL;
-		out->nrm = *h;
-		*h = NULL;
-		parse_release(p, slot);
-		free(h);
+		out->nrm = parse_normal_value(p);
 		return true;
-	}
 	case KW_INTERIOR: {
 		struct interior **h = calloc(1, sizeof *h);
 		if (!h) abort();

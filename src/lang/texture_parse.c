@@ -1458,6 +1458,33 @@ void parse_texture_layer(struct parser *p, struct texture **tex)
 	*tex = parse_layer_onto(t, *tex);
 }
 
+/* A pigment or normal value for #declare: the statement read into a
+ * fresh holder. The caller owns the result. */
+struct pigment *parse_pigment_value(struct parser *p)
+{
+	struct pigment **h = holder_new(sizeof *h);
+	*h = pigment_new();
+	int slot = parse_own(p, h, free_pigment_holder);
+	parse_pigment(p, h);
+	struct pigment *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
+struct normal *parse_normal_value(struct parser *p)
+{
+	struct normal **h = holder_new(sizeof *h);
+	int slot = parse_own(p, h, free_normal_holder);
+	parse_normal(p, h);
+	struct normal *r = *h;
+	*h = NULL;
+	parse_release(p, slot);
+	free(h);
+	return r;
+}
+
 /* A texture value for #declare: texture { } { texture { } } (layered when
  * several follow). The caller owns the result. */
 struct texture *parse_texture_value(struct parser *p)
