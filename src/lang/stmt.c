@@ -151,6 +151,35 @@ static void parse_global_settings(struct parser *p)
 		case KW_ADC_BAILOUT: parse_advance(p); gs->adc_bailout = parse_float(p); break;
 		case KW_AMBIENT_LIGHT: parse_advance(p); gs->ambient_light = rgb_of(parse_color(p)); break;
 		case KW_IRID_WAVELENGTH: parse_advance(p); gs->irid_wavelength = rgb_of(parse_color(p)); break;
+		case KW_NOISE_GENERATOR: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double g = parse_float(p);
+			if (g != 1 && g != 2 && g != 3)
+				parse_error_at(p, at, "noise_generator must be 1, 2 or 3, not %g", g);
+			gs->noise_generator = (int)g;
+			break;
+		}
+		case KW_NUMBER_OF_WAVES: {
+			parse_advance(p);
+			struct srcpos at = parse_peek(p)->pos;
+			double n = parse_float(p);
+			if (!(n >= 1 && n <= 1000))
+				parse_error_at(p, at, "number_of_waves must be between 1 and 1000, not %g", n);
+			gs->number_of_waves = (int)n;
+			break;
+		}
+		case KW_CHARSET:
+			parse_advance(p);
+			if (parse_accept_kw(p, KW_ASCII))
+				gs->charset = 0;
+			else if (parse_accept_kw(p, KW_UTF8))
+				gs->charset = 1;
+			else if (parse_accept_kw(p, KW_SYS))
+				gs->charset = 2;
+			else
+				parse_expected(p, "ascii, utf8 or sys");
+			break;
 		default:
 			parse_expected(p, "a global setting or '}'");
 		}

@@ -23,6 +23,14 @@ const char *feature_name(enum feature f)
 	case FEAT_FRESNEL: return "fresnel reflection";
 	case FEAT_LAYERS: return "layered textures";
 	case FEAT_UV: return "uv mapping";
+	case FEAT_AREA_LIGHTS: return "area lights";
+	case FEAT_SPOTLIGHTS: return "spotlight cones";
+	case FEAT_LIGHT_FADE: return "light fading";
+	case FEAT_FOCAL_BLUR: return "focal blur";
+	case FEAT_FOG: return "fog";
+	case FEAT_SKY: return "sky";
+	case FEAT_RAINBOW: return "rainbow";
+	case FEAT_ANTIALIAS: return "antialiasing";
 	default: return "?";
 	}
 }

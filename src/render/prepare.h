@@ -24,7 +24,15 @@ enum feature {
 	FEAT_FRESNEL = 1 << 11,   /* some reflection block uses fresnel */
 	FEAT_LAYERS = 1 << 12,    /* layered, patterned or material-mapped textures */
 	FEAT_UV = 1 << 13,        /* some pattern is uv-mapped */
-	FEAT__COUNT = 14
+	FEAT_AREA_LIGHTS = 1 << 14, /* some shadow-casting light is an area light */
+	FEAT_SPOTLIGHTS = 1 << 15,  /* some light is a spotlight or cylinder (cones) */
+	FEAT_LIGHT_FADE = 1 << 16,  /* some light fades with distance */
+	FEAT_FOCAL_BLUR = 1 << 17,  /* the camera has an aperture */
+	FEAT_FOG = 1 << 18,         /* fog */
+	FEAT_SKY = 1 << 19,         /* sky_sphere */
+	FEAT_RAINBOW = 1 << 20,     /* rainbow */
+	FEAT_ANTIALIAS = 1 << 21,   /* +A: more than one sample per pixel where needed */
+	FEAT__COUNT = 22
 };
 
 /* Rays track the media they are in (refraction, fading, Fresnel) only

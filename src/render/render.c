@@ -3,7 +3,7 @@
  * the image is the same whatever the thread count or tile order. */
 #include "render/render.h"
 
-#include "render/trace.h"
+#include "render/camsample.h"
 
 #include <pthread.h>
 #include <stdatomic.h>
@@ -29,15 +29,6 @@ struct worker {
 	pthread_t thread;
 };
 
-struct ray render_camera_ray(const struct camera *c, double x, double y, int w, int h)
-{
-	double sx = x / w - 0.5;
-	double sy = 0.5 - y / h;
-	vec3 d = v3_add(c->direction, v3_add(v3_scale(c->right, sx), v3_scale(c->up, sy)));
-	struct ray r = {c->location, v3_norm(d)};
-	return r;
-}
-
 static void render_tile(struct worker *w, int tile)
 {
 	struct job *j = w->job;
@@ -46,12 +37,10 @@ static void render_tile(struct worker *w, int tile)
 	int x0 = o->col0 + tx * TILE, y0 = o->row0 + ty * TILE;
 	int x1 = x0 + TILE < o->col1 ? x0 + TILE : o->col1;
 	int y1 = y0 + TILE < o->row1 ? y0 + TILE : o->row1;
-	const struct camera *cam = &j->p->scene->camera;
 	for (int y = y0; y < y1; y++)
 		for (int x = x0; x < x1; x++) {
-			struct ray r = render_camera_ray(cam, x + 0.5, y + 0.5, o->width, o->height);
 			bool any;
-			rgb c = trace_ray(&w->tr, &r, 1, RAY_CAMERA, &any);
+			rgb c = camera_sample(&w->tr, x + 0.5, y + 0.5, o->width, o->height, x, y, 0, &any);
 			float *px = fb_pixel(j->fb, x, y);
 			px[0] = (float)c.r;
 			px[1] = (float)c.g;

@@ -24,7 +24,4 @@ struct render_opts {
  * stopped through opts->stop. Statistics are summed into *stats. */
 bool render_image(const struct prepared *p, const struct render_opts *opts, struct framebuffer *fb, struct stats *stats);
 
-/* The camera ray through the centre of pixel (x, y) of a w x h image. */
-struct ray render_camera_ray(const struct camera *c, double x, double y, int w, int h);
-
 #endif

@@ -52,3 +52,16 @@ void camera_transform(struct camera *c, const struct xform *t)
 	c->right = mat_dir(&t->fwd, c->right);
 	c->up = mat_dir(&t->fwd, c->up);
 }
+
+bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
+                struct ray *r)
+{
+	(void)lu;
+	(void)lv;
+	double sx = x / w - 0.5;
+	double sy = 0.5 - y / h;
+	vec3 d = v3_add(c->direction, v3_add(v3_scale(c->right, sx), v3_scale(c->up, sy)));
+	r->org = c->location;
+	r->dir = v3_norm(d);
+	return true;
+}

@@ -13,6 +13,9 @@ struct scene *scene_new(void)
 	s->gs.adc_bailout = 1.0 / 255.0;
 	s->gs.ambient_light = rgb_make(1, 1, 1);
 	s->gs.irid_wavelength = rgb_make(0.25, 0.18, 0.14);
+	s->gs.noise_generator = 2;
+	s->gs.number_of_waves = 10;
+	s->gs.charset = 1;
 	s->version = 3.7;
 	return s;
 }
@@ -23,7 +26,12 @@ void scene_free(struct scene *s)
 	for (size_t i = 0; i < s->nobjects; i++)
 		object_free(s->objects[i]);
 	free(s->objects);
+	for (size_t i = 0; i < s->nlights; i++) {
+		object_free(s->lights[i].looks_like);
+		object_free(s->lights[i].projected_through);
+	}
 	free(s->lights);
+	atmos_free(&s->atmos);
 	free(s);
 }
 

@@ -4,6 +4,7 @@
 #ifndef LUCENT_SCENE_H
 #define LUCENT_SCENE_H
 
+#include "scene/atmos.h"
 #include "scene/camera.h"
 #include "scene/color.h"
 #include "scene/light.h"
@@ -18,6 +19,9 @@ struct global_settings {
 	double adc_bailout;
 	rgb ambient_light;
 	rgb irid_wavelength;   /* <0.25, 0.18, 0.14>; read but, as in POV-Ray 3.7, without effect */
+	int noise_generator;   /* 1, 2 (the default) or 3: for patterns that do not name one */
+	int number_of_waves;   /* waves and ripples: 10 by default */
+	int charset;           /* 0: ascii, 1: utf8 (the default), 2: sys */
 };
 
 struct scene {
@@ -27,6 +31,7 @@ struct scene {
 	size_t nlights, cap_lights;
 	struct camera camera;
 	struct rgbft background;
+	struct atmosphere atmos;
 	struct global_settings gs;
 	double version;          /* #version in effect at the end of the parse */
 	bool version_set;        /* the scene said #version at all */

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tests/render/refresh.sh: regenerate the reference images of the render
-# tests, for every scene in tests/render/scenes.list (or only the scenes
+# tests, for every scene in tests/render/*.list (or only the scenes
 # named on the command line):
 #   tests/render/povray/NAME.png    POV-Ray 3.7's render of scenes/NAME.pov
 #   tests/render/expected/NAME.png  lucent's render, which run.sh must then
@@ -23,9 +23,10 @@ LUCENT_STDLIB=${LUCENT_STDLIB:-$top/stdlib}
 export LUCENT_STDLIB
 cd "$top" || exit 1
 
-list=tests/render/scenes.list
 log=$(mktemp "${TMPDIR:-/tmp}/lucent-refresh.XXXXXX") || exit 1
-trap 'rm -f "$log"' EXIT
+list=$log.list
+trap 'rm -f "$log" "$list"' EXIT
+cat tests/render/*.list > "$list" || exit 1
 mkdir -p tests/render/povray tests/render/expected
 
 # wanted NAME: is the scene selected by the command line (all if none)?
@@ -41,8 +42,10 @@ wanted() {
 
 status=0
 count=0
-while read -r name w h _limits; do
+while read -r name w h opts; do
 	case $name in '' | '#'*) continue ;; esac
+	sw=""
+	case $opts in *'|'*) sw=${opts#*|} ;; esac
 	wanted "$name" "$@" || continue
 	count=$((count + 1))
 	scene=scenes/$name.pov
@@ -51,13 +54,15 @@ while read -r name w h _limits; do
 		status=1
 		continue
 	fi
-	if ! "$POVRAY" -D -V +W"$w" +H"$h" +I"$scene" +Otests/render/povray/"$name".png \
+	# shellcheck disable=SC2086 # the switches are meant to be split
+	if ! "$POVRAY" -D -V +W"$w" +H"$h" $sw +I"$scene" +Otests/render/povray/"$name".png \
 			< /dev/null > "$log" 2>&1; then
 		echo "$name: povray failed:" >&2
 		sed 's/^/  /' "$log" >&2
 		status=1
 	fi
-	if ! "$LUCENT" -q +W"$w" +H"$h" "$scene" +Otests/render/expected/"$name".png \
+	# shellcheck disable=SC2086
+	if ! "$LUCENT" -q +W"$w" +H"$h" $sw "$scene" +Otests/render/expected/"$name".png \
 			< /dev/null > "$log" 2>&1; then
 		echo "$name: lucent failed:" >&2
 		sed 's/^/  /' "$log" >&2

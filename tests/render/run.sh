@@ -1,16 +1,19 @@
 #!/bin/sh
-# tests/render/run.sh: render every scene of tests/render/scenes.list with
+# tests/render/run.sh: render every scene of tests/render/*.list with
 # lucent, then compare the image
 #  (a) with tests/render/expected/NAME.png, exactly: rendering is
 #      deterministic, so any changed pixel is a regression (or a deliberate
 #      change: then run tests/render/refresh.sh and commit the new images);
 #  (b) with POV-Ray 3.7's render tests/render/povray/NAME.png, through
-#      OpenImageIO's idiff, within the scene's tolerance. Each line of
-#      scenes.list is "NAME WIDTH HEIGHT [IDIFF OPTIONS]"; the options
+#      OpenImageIO's idiff, within the scene's tolerance. Each line of a
+#      list is "NAME WIDTH HEIGHT [IDIFF OPTIONS]"; the options
 #      (e.g. -failpercent 0.02) override the default limits below.
 # Prints one line per scene with idiff's figures against POV-Ray (mean and
 # max error, pixels over the 1/255 threshold) and ends with "N passed,
 # M failed". Exit status 77 (skip) if idiff is missing.
+# The scenes are listed in tests/render/*.list (one list per area). A line
+# may end with "| SWITCHES": render switches (e.g. +A0.1 +AM2) given to both
+# lucent and POV-Ray.
 : "${top_srcdir:=$(cd "$(dirname "$0")/../.." && pwd)}"
 
 IDIFF=${IDIFF:-idiff}
@@ -22,8 +25,8 @@ fi
 # shellcheck source=tests/lib.sh
 . "$top_srcdir/tests/lib.sh"
 cd "$top_srcdir" || exit 1
-list=tests/render/scenes.list
-[ -f "$list" ] || fail "no $list"
+list=$WORK/all.list
+cat tests/render/*.list > "$list" || fail "no tests/render/*.list"
 # Against POV-Ray: a pixel fails if a channel is off by more than 1/255
 # (0.004 > 1/255 = 0.00392), and by default no pixel may fail. The warning
 # threshold stays at 1/255 so that the count is always reported.
@@ -51,10 +54,13 @@ figures() {
 
 while read -r name w h opts; do
 	case $name in '' | '#'*) continue ;; esac
+	sw=""
+	case $opts in *'|'*) sw=${opts#*|}; opts=${opts%%|*} ;; esac
 	out=$WORK/$name.png
 	expected=tests/render/expected/$name.png
 	povray=tests/render/povray/$name.png
-	if ! "$LUCENT" -q +W"$w" +H"$h" scenes/"$name".pov +O"$out" \
+	# shellcheck disable=SC2086 # the switches are meant to be split
+	if ! "$LUCENT" -q +W"$w" +H"$h" $sw scenes/"$name".pov +O"$out" \
 			< /dev/null > "$WORK/render.log" 2>&1; then
 		fail "$name: lucent failed: $(tr '\n' ' ' < "$WORK/render.log")"
 		continue
