@@ -49,8 +49,8 @@ static bool starts_color(struct parser *p)
  *           | octaves N | omega F | lambda F | fog_offset F | fog_alt F
  *           | up V | transformation
  * A transformation turns `up` as it stands when the transformation is read
- * (an `up` after it is not turned), as POV-Ray does, and moves the points
- * where the turbulence is evaluated. */
+ * (an `up` after it is not turned); it moves nothing else, not even the
+ * turbulence (measured on POV-Ray 3.7). */
 static void parse_fog(struct parser *p, struct fog *f)
 {
 	parse_advance(p);
@@ -63,7 +63,6 @@ static void parse_fog(struct parser *p, struct fog *f)
 		struct xform step;
 		if (parse_transform_item(p, &step)) {
 			f->up = mat_dir(&step.fwd, f->up);
-			f->xf = xform_compose(&step, &f->xf);
 			continue;
 		}
 		const struct token *t = parse_peek(p);

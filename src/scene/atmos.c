@@ -12,7 +12,6 @@ struct fog fog_default(void)
 	f.up = v3(0, 1, 0);
 	f.turb = (struct turbulence){v3(0, 0, 0), 6, 0.5, 2.0};
 	f.turb_depth = 0.5;
-	f.xf = xform_identity();
 	return f;
 }
 

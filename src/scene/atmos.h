@@ -24,11 +24,11 @@ struct fog {
 	struct rgbft color;          /* filter: how much of what is behind is tinted;
 	                              * transmit: the least share of it that shows */
 	double offset, alt;          /* ground fog: density 1 up to offset, then 1/(1+((h-offset)/alt)^2) */
-	vec3 up;                     /* as written, turned by the transforms that follow it */
+	vec3 up;                     /* as written, turned by the transformations that follow it (the
+	                              * transformations move nothing else, measured) */
 	bool has_turbulence;
 	struct turbulence turb;      /* amount <0,0,0>, octaves 6, omega 0.5, lambda 2 */
 	double turb_depth;           /* 0.5 */
-	struct xform xf;             /* the fog's transforms (where its turbulence is evaluated) */
 };
 
 /* sky_sphere: pigments layered in order (the later on top), seen in the
