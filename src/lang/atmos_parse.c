@@ -167,7 +167,7 @@ static void free_rainbow_holder(void *h)
 /* rainbow := rainbow '{' [RAINBOW_IDENT] { rainbow_item } '}'
  * rainbow_item := direction V | angle F | width F | distance F | jitter F
  *               | up V | arc_angle F | falloff_angle F | color_map
- *               | transformation
+ * (no transformations: POV-Ray 3.7 refuses them too)
  * Into *out; the colour map's reference passes to it. */
 static void parse_rainbow(struct parser *p, struct rainbow *out)
 {
@@ -187,12 +187,6 @@ static void parse_rainbow(struct parser *p, struct rainbow *out)
 	struct srcpos falloff_at = at;
 	bool arc_given = false, falloff_given = false;
 	while (!parse_accept(p, TOK_RBRACE)) {
-		struct xform step;
-		if (parse_transform_item(p, &step)) {
-			r->direction = mat_dir(&step.fwd, r->direction);
-			r->up = mat_dir(&step.fwd, r->up);
-			continue;
-		}
 		const struct token *t = parse_peek(p);
 		if (t->kind != TOK_KEYWORD)
 			parse_expected(p, "a rainbow item or '}'");
