@@ -410,7 +410,7 @@ static struct value ident_value_copy(struct parser *p, const struct value *v, st
 	case VAL_OBJECT: case VAL_TEXTURE: case VAL_PIGMENT: case VAL_FINISH: case VAL_CAMERA:
 	case VAL_NORMAL: case VAL_INTERIOR: case VAL_MATERIAL: case VAL_MAP:
 	case VAL_LIGHT: case VAL_TRANSFORM: case VAL_ARRAY: case VAL_SPLINE: case VAL_FUNCTION:
-	case VAL_FILE: case VAL_MACRO: {
+	case VAL_FILE: case VAL_MACRO: case VAL_FOG: case VAL_SKY_SPHERE: case VAL_RAINBOW: {
 		struct value *h = malloc(sizeof *h);
 		if (!h) abort();
 		*h = c;

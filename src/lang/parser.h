@@ -311,6 +311,14 @@ bool parse_transform_item(struct parser *p, struct xform *out);
 /* `transform` { ... } | IDENT as a value; the caller owns the result. */
 struct xform *parse_transform_value(struct parser *p);
 
+/* The scene-wide statements (atmos_parse.c): background, fog, sky_sphere,
+ * rainbow and global_settings. parse_atmos_statement reads one at the
+ * current token into the scene (false if the token begins none);
+ * parse_atmos_value reads a fog, sky_sphere or rainbow as a #declare value
+ * into *out (false if the token begins none). */
+bool parse_atmos_statement(struct parser *p);
+bool parse_atmos_value(struct parser *p, struct value *out);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an

@@ -116,85 +116,6 @@ static void parse_camera(struct parser *p, struct camera *c)
 		camera_transform(c, &xf);
 }
 
-/* ---- global settings, background ---- */
-
-/* global_settings := global_settings '{' { setting } '}' */
-static void parse_global_settings(struct parser *p)
-{
-	struct global_settings *gs = &p->scene->gs;
-	parse_advance(p);
-	parse_expect(p, TOK_LBRACE);
-	while (!parse_accept(p, TOK_RBRACE)) {
-		const struct token *t = parse_peek(p);
-		if (t->kind != TOK_KEYWORD)
-			parse_expected(p, "a global setting or '}'");
-		switch (t->kw) {
-		case KW_ASSUMED_GAMMA: {
-			parse_advance(p);
-			struct srcpos at = parse_peek(p)->pos;
-			double g = parse_float(p);
-			if (g <= 0)
-				parse_error_at(p, at, "assumed_gamma must be greater than 0");
-			gs->assumed_gamma = g;
-			gs->assumed_gamma_set = true;
-			break;
-		}
-		case KW_MAX_TRACE_LEVEL: {
-			parse_advance(p);
-			struct srcpos at = parse_peek(p)->pos;
-			double m = parse_float(p);
-			if (m < 1 || m > 256)
-				parse_error_at(p, at, "max_trace_level must be between 1 and 256");
-			gs->max_trace_level = (int)m;
-			break;
-		}
-		case KW_ADC_BAILOUT: parse_advance(p); gs->adc_bailout = parse_float(p); break;
-		case KW_AMBIENT_LIGHT: parse_advance(p); gs->ambient_light = rgb_of(parse_color(p)); break;
-		case KW_IRID_WAVELENGTH: parse_advance(p); gs->irid_wavelength = rgb_of(parse_color(p)); break;
-		case KW_NOISE_GENERATOR: {
-			parse_advance(p);
-			struct srcpos at = parse_peek(p)->pos;
-			double g = parse_float(p);
-			if (g != 1 && g != 2 && g != 3)
-				parse_error_at(p, at, "noise_generator must be 1, 2 or 3, not %g", g);
-			gs->noise_generator = (int)g;
-			break;
-		}
-		case KW_NUMBER_OF_WAVES: {
-			parse_advance(p);
-			struct srcpos at = parse_peek(p)->pos;
-			double n = parse_float(p);
-			if (!(n >= 1 && n <= 1000))
-				parse_error_at(p, at, "number_of_waves must be between 1 and 1000, not %g", n);
-			gs->number_of_waves = (int)n;
-			break;
-		}
-		case KW_CHARSET:
-			parse_advance(p);
-			if (parse_accept_kw(p, KW_ASCII))
-				gs->charset = 0;
-			else if (parse_accept_kw(p, KW_UTF8))
-				gs->charset = 1;
-			else if (parse_accept_kw(p, KW_SYS))
-				gs->charset = 2;
-			else
-				parse_expected(p, "ascii, utf8 or sys");
-			break;
-		default:
-			parse_expected(p, "a global setting or '}'");
-		}
-	}
-}
-
-/* background := background '{' COLOR '}' */
-static void parse_background(struct parser *p)
-{
-	parse_advance(p);
-	parse_expect(p, TOK_LBRACE);
-	p->scene->background = parse_color(p);
-	parse_expect(p, TOK_RBRACE);
-}
-
 /* ---- arrays ---- */
 
 static void free_array_holder(void *h)
@@ -404,6 +325,8 @@ static bool item_value(struct parser *p, struct value *out)
 		out->cam = c;
 		return true;
 	}
+	case KW_FOG: case KW_SKY_SPHERE: case KW_RAINBOW:
+		return parse_atmos_value(p, out);
 	case KW_LIGHT_SOURCE: {
 		struct light *l = malloc(sizeof *l);
 		if (!l) abort();
@@ -420,7 +343,7 @@ static bool item_value(struct parser *p, struct value *out)
 }
 
 /* statement := object | light_source | camera | global_settings
- *            | background */
+ *            | background | fog | sky_sphere | rainbow */
 void parse_statement(struct parser *p)
 {
 	const struct token *t = parse_peek(p);
@@ -444,9 +367,10 @@ void parse_statement(struct parser *p)
 			p->scene->camera = c;
 			return;
 		}
-		case KW_GLOBAL_SETTINGS: parse_global_settings(p); return;
-		case KW_BACKGROUND: parse_background(p); return;
-		default: break;
+		default:
+			if (parse_atmos_statement(p))
+				return;
+			break;
 		}
 	}
 	if (t->kind == TOK_IDENT && !parse_lookup(p, t->str))

@@ -2,6 +2,7 @@
 #include "lang/value.h"
 
 #include "lang/lex.h"
+#include "scene/atmos.h"
 #include "scene/camera.h"
 #include "scene/fn.h"
 #include "scene/light.h"
@@ -35,6 +36,9 @@ const char *val_kind_name(enum val_kind k)
 	case VAL_SPLINE: return "spline";
 	case VAL_FUNCTION: return "function";
 	case VAL_FILE: return "file";
+	case VAL_FOG: return "fog";
+	case VAL_SKY_SPHERE: return "sky_sphere";
+	case VAL_RAINBOW: return "rainbow";
 	}
 	return "?";
 }
@@ -74,6 +78,12 @@ void val_clear(struct value *v)
 	case VAL_SPLINE: spline_unref(v->spl); break;
 	case VAL_FUNCTION: fn_unref(v->fn); break;
 	case VAL_FILE: sdl_file_unref(v->file); break;
+	case VAL_FOG: free(v->fog); break;
+	case VAL_SKY_SPHERE: sky_sphere_free(v->sky); break;
+	case VAL_RAINBOW:
+		rainbow_clear(v->rainbow);
+		free(v->rainbow);
+		break;
 	default: break;
 	}
 	v->kind = VAL_NONE;
@@ -110,6 +120,13 @@ struct value val_copy(const struct value *src)
 	case VAL_SPLINE: v.spl->refs++; break;
 	case VAL_FUNCTION: fn_ref(v.fn); break;
 	case VAL_FILE: v.file->refs++; break;
+	case VAL_FOG: v.fog = dup_bytes(src->fog, sizeof *src->fog); break;
+	case VAL_SKY_SPHERE: v.sky = sky_sphere_copy(src->sky); break;
+	case VAL_RAINBOW:
+		v.rainbow = dup_bytes(src->rainbow, sizeof *src->rainbow);
+		if (v.rainbow->color_map)
+			blend_map_ref(v.rainbow->color_map);
+		break;
 	default: break;
 	}
 	v.owner = 0;

@@ -34,10 +34,16 @@ enum val_kind {
 	VAL_SPLINE,   /* shared, reference-counted */
 	VAL_FUNCTION, /* a compiled user function (shared, reference-counted) */
 	VAL_FILE,     /* an #fopen'ed file */
+	VAL_FOG,      /* fog { } (owned copy) */
+	VAL_SKY_SPHERE, /* sky_sphere { } (owned) */
+	VAL_RAINBOW,  /* rainbow { } (owned; holds its colour map's reference) */
 };
 
 struct light;
 struct camera;
+struct fog;
+struct sky_sphere;
+struct rainbow;
 
 /* material { texture interior }: what a material identifier holds. */
 struct material {
@@ -130,6 +136,9 @@ struct value {
 		struct spline *spl;    /* one reference */
 		struct fn *fn;         /* one reference */
 		struct sdl_file *file; /* one reference */
+		struct fog *fog;       /* owned */
+		struct sky_sphere *sky; /* owned */
+		struct rainbow *rainbow; /* owned */
 	};
 };
 

@@ -3,6 +3,7 @@
 
 #include "geom/csg.h"
 #include "image/image.h"
+#include "render/atmos.h"
 
 #include <stdlib.h>
 
@@ -161,6 +162,14 @@ unsigned prepare_features(const struct scene *s)
 		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR | FEAT_IRID | FEAT_CAUSTICS);
 	if (shadow_light && caster)
 		f |= FEAT_SHADOWS;
+	for (size_t i = 0; i < s->atmos.nfogs; i++)
+		if (s->atmos.fogs[i].distance > 0)
+			f |= FEAT_FOG;
+	for (size_t i = 0; i < s->atmos.nrainbows; i++)
+		if (s->atmos.rainbows[i].color_map && s->atmos.rainbows[i].width > 0 && s->atmos.rainbows[i].distance > 0)
+			f |= FEAT_RAINBOW;
+	if (s->atmos.sky)
+		f |= FEAT_SKY;
 	return f;
 }
 
@@ -261,6 +270,8 @@ struct prepared *prepare_scene(struct scene *s)
 	}
 	texture_unref(plain);
 	p->bvh = bvh_build(bounded.v, bounded.n);
+	if (s->atmos.nfogs || s->atmos.nrainbows)
+		p->atmos = atmos_prepare(bounded.v, bounded.n, unbounded.v, unbounded.n);
 	free(bounded.v);
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
@@ -288,6 +299,7 @@ void prepared_free(struct prepared *p)
 {
 	if (!p) return;
 	bvh_free(p->bvh);
+	atmos_ready_free(p->atmos);
 	free((void *)p->unbounded);
 	free(p);
 }

@@ -9,6 +9,8 @@
 #include "accel/bvh.h"
 #include "scene/scene.h"
 
+struct atmos_ready;
+
 enum feature {
 	FEAT_SHADOWS = 1 << 0,    /* some light casts shadows onto something */
 	FEAT_PHONG = 1 << 1,      /* some finish has a phong highlight */
@@ -57,6 +59,7 @@ struct prepared {
 	int max_depth;                   /* max_trace_level */
 	bool signature;                  /* --signature: flat colour per primitive */
 	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA) */
+	struct atmos_ready *atmos;       /* fog and rainbows (render/atmos.h); NULL without them */
 };
 
 /* Prepare s for rendering. s must outlive the result. */

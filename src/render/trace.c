@@ -5,6 +5,7 @@
 
 #include "image/image.h"
 #include "math/hash.h"
+#include "render/atmos.h"
 #include "render/shade.h"
 
 #include <stdlib.h>
@@ -544,7 +545,6 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
                  const struct medium *med, bool *hit_anything)
 {
 	const struct prepared *p = tr->p;
-	const struct scene *sc = p->scene;
 	tr->stats.rays[kind]++;
 	struct hit h;
 	unsigned skip = kind == RAY_CAMERA ? OBJ_NO_IMAGE : kind == RAY_REFLECTED ? OBJ_NO_REFLECTION : 0;
@@ -555,9 +555,14 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 			fading = in;
 	}
 	if (!trace_closest(p, r, 0, INFINITY, skip, &h)) {
-		*hit_anything = false;
-		rgb bg = rgb_of(sc->background);
-		return fading ? rgb_mul(bg, shade_fade(fading, INFINITY)) : bg;
+		vec3 dir = v3_norm(r->dir);
+		struct rgbft bg = atmos_escape(p, dir);
+		if (p->features & (FEAT_FOG | FEAT_RAINBOW))
+			bg = atmos_apply(p, r->org, dir, ATMOS_MISS_DEPTH, bg);
+		/* The pixel counts as opaque when less than half of it is
+		 * see-through (POV-Ray's alpha is 1 - bg.t). */
+		*hit_anything = bg.t < 0.5;
+		return fading ? rgb_mul(rgb_of(bg), shade_fade(fading, INFINITY)) : rgb_of(bg);
 	}
 	*hit_anything = true;
 	if (p->signature)
@@ -582,6 +587,11 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
 	if (fading)
 		col = rgb_mul(col, shade_fade(fading, h.t * v3_len(r->dir)));
+	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
+		double len = v3_len(r->dir);
+		struct rgbft c = {col.r, col.g, col.b, 0, 0};
+		col = rgb_of(atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c));
+	}
 	return col;
 }
 

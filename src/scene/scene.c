@@ -16,6 +16,7 @@ struct scene *scene_new(void)
 	s->gs.noise_generator = 2;
 	s->gs.number_of_waves = 10;
 	s->gs.charset = 1;
+	s->background.t = 1; /* POV-Ray 3.7: transparent black until a background statement */
 	s->version = 3.7;
 	return s;
 }

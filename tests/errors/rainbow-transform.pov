@@ -1,0 +1,3 @@
+// expect: 3:53: expected a rainbow item or '}', found 'rotate'
+#version 3.7;
+rainbow { direction z angle 42 width 5 distance 100 rotate x*5 }
