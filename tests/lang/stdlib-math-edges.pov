@@ -29,3 +29,7 @@ S("VRotationD", VRotationD(<0, 0, 1>, <1, 0, 0>, y))
 S("VRotationD", VRotationD(<0, 0, 1>, <1, 0, 0>, -y))
 S("VEq close", VEq(<1, 2, 3>, <1, 2, 3 + 1e-12>))
 V3("VWith_Len neg", VWith_Len(<0, 0, -3>, -2))
+// Zero vectors: POV-Ray normalizes them to zero (with a warning).
+S("VAngleD zero", VAngleD(<0, 0, 0>, x))
+V3("VWith_Len zero", VWith_Len(<0, 0, 0>, 2))
+V3("VPerp_To_Plane parallel", VPerp_To_Plane(<1, 2, 3>, <2, 4, 6>))
