@@ -761,9 +761,16 @@ static void dir_include(struct parser *p, struct srcpos at)
 	char *path = find_include(p, name, at.file);
 	if (!path)
 		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
+	/* A file is read once, unless the scene has written some file since
+	 * (it may have been this one: Parse_String of strings.inc). */
 	uint32_t file = src_find(p->sm, path);
-	if (!file)
+	if (file && src_file(p->sm, file)->writes != p->writes)
+		file = 0;
+	if (!file) {
 		file = src_load(p->sm, path);
+		if (file)
+			p->sm->files[file]->writes = p->writes;
+	}
 	int err = errno;
 	free(path);
 	if (!file)

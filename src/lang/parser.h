@@ -93,6 +93,9 @@ struct parser {
 	unsigned long bindgen;       /* bumped when any binding is added or removed or a
 	                              * frame is entered or left: pointers to bindings
 	                              * taken at one value stay valid while it holds */
+	unsigned long writes;        /* files opened by #fopen for writing or appending:
+	                              * an #include of a file loaded before the last
+	                              * such #fopen reads it again */
 };
 
 /* Errors: report at pos (or at the current token) and unwind. */
