@@ -613,8 +613,10 @@ static void declare_element(struct parser *p, const char *name, bool local, stru
 		parse_error_at(p, at, "'%s' is a %s, not an array", name, val_kind_name(av->kind));
 	size_t idx = parse_array_index(p, av->arr, name, at);
 	parse_expect(p, TOK_EQ);
+	int home = p->nframes - 1;
 	struct value v = parse_rvalue(p);
 	bool numeric = val_is_numeric(&v);
+	parse_leave_finished(p, home);
 	/* Find the array again: reading the value may have run code. An
 	 * element is assigned where the array is, with #local too. */
 	(void)local;
@@ -688,11 +690,14 @@ static void dir_declare(struct parser *p, bool local)
 		return;
 	}
 	parse_expect(p, TOK_EQ);
+	int home = p->nframes - 1;
 	struct value v = parse_rvalue(p);
 	v.pos = id.pos;
 	v.deprecated = deprecated;
 	v.deprecated_once = once;
 	bool numeric = val_is_numeric(&v);
+	/* Bind in the frame of the #declare, not in a macro the value called. */
+	parse_leave_finished(p, home);
 	parse_assign(p, id.str, local, v);
 	end_declaration(p, numeric, id.str);
 }
@@ -756,9 +761,16 @@ static void dir_include(struct parser *p, struct srcpos at)
 	char *path = find_include(p, name, at.file);
 	if (!path)
 		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
+	/* A file is read once, unless the scene has written some file since
+	 * (it may have been this one: Parse_String of strings.inc). */
 	uint32_t file = src_find(p->sm, path);
-	if (!file)
+	if (file && src_file(p->sm, file)->writes != p->writes)
+		file = 0;
+	if (!file) {
 		file = src_load(p->sm, path);
+		if (file)
+			p->sm->files[file]->writes = p->writes;
+	}
 	int err = errno;
 	free(path);
 	if (!file)

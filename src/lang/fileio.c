@@ -79,6 +79,7 @@ void parse_fopen(struct parser *p, struct srcpos at)
 	h->file->writing = writing;
 	int slot = parse_own(p, h, free_file_holder);
 	if (writing) {
+		p->writes++;
 		h->file->fp = fopen(path, append ? "ab" : "wb");
 		if (!h->file->fp) {
 			int e = errno;

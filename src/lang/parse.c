@@ -496,6 +496,16 @@ struct symtab *parse_local_table(struct parser *p)
 	return p->globals;
 }
 
+void parse_leave_finished(struct parser *p, int home)
+{
+	while (!p->have_cur && p->nframes - 1 > home && p->nframes > 1) {
+		const struct frame *f = &p->frames[p->nframes - 1];
+		if (f->pos < f->end)
+			return;
+		pop_frame(p);
+	}
+}
+
 /* ---- entry ---- */
 
 int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, struct scene *s)

@@ -93,6 +93,9 @@ struct parser {
 	unsigned long bindgen;       /* bumped when any binding is added or removed or a
 	                              * frame is entered or left: pointers to bindings
 	                              * taken at one value stay valid while it holds */
+	unsigned long writes;        /* files opened by #fopen for writing or appending:
+	                              * an #include of a file loaded before the last
+	                              * such #fopen reads it again */
 };
 
 /* Errors: report at pos (or at the current token) and unwind. */
@@ -160,6 +163,12 @@ struct symtab *parse_alias_target(struct parser *p, const char **name);
 bool parse_unbind(struct parser *p, const char *name);
 /* The innermost #local table (the globals in the main file). */
 struct symtab *parse_local_table(struct parser *p);
+/* Close the frames above frame index `home` whose tokens are all read.
+ * A value read from its compiled form (exprcache.h) reads a macro's last
+ * tokens in place and leaves the finished macro's frame on the stack; a
+ * #declare or #local must not bind into it. Does nothing while a
+ * lookahead token is held (it was read past those frames already). */
+void parse_leave_finished(struct parser *p, int home);
 
 /* Raw token access for directives: the next token of the innermost frame,
  * without running directives or macros. Only when no lookahead is held. */

@@ -102,7 +102,7 @@ uint32_t src_load(struct srcmgr *sm, const char *path)
 
 uint32_t src_find(const struct srcmgr *sm, const char *path)
 {
-	for (size_t i = 1; i < sm->nfiles; i++)
+	for (size_t i = sm->nfiles - 1; i >= 1; i--)
 		if (strcmp(sm->files[i]->path, path) == 0)
 			return (uint32_t)i;
 	return 0;

@@ -28,6 +28,7 @@ struct srcfile {
 	size_t ntoks;
 	void **blocks;       /* the numlists of TOK_NUMLIST tokens (owned) */
 	size_t nblocks;
+	unsigned long writes; /* the parser's write count when loaded (parser.h) */
 };
 
 struct srcmgr {
@@ -44,7 +45,8 @@ uint32_t src_add(struct srcmgr *sm, const char *path, char *text, size_t len);
 /* Read a whole file (or standard input for "-") and register it. Returns 0
  * and sets errno if it cannot be read. */
 uint32_t src_load(struct srcmgr *sm, const char *path);
-/* The file registered under exactly this path, or 0. */
+/* The file registered last under exactly this path (a file read again
+ * is registered again), or 0. */
 uint32_t src_find(const struct srcmgr *sm, const char *path);
 const struct srcfile *src_file(const struct srcmgr *sm, uint32_t file);
 /* The text of line `line` of `file` (without its newline) and its length. */

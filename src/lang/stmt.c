@@ -172,7 +172,9 @@ static struct array *parse_array(struct parser *p)
 	parse_advance(p); /* array */
 	int dims[ARRAY_MAX_DIMS], nd = 0;
 	size_t total = 1;
-	while (parse_is(p, TOK_LBRACKET)) {
+	/* Look for the next '[' without running a directive that may follow
+	 * (`#declare A = array[3]` then `#declare A[0] = ...`). */
+	while (parse_peek_cont(p)->kind == TOK_LBRACKET) {
 		parse_advance(p);
 		struct srcpos at = parse_peek(p)->pos;
 		double n = parse_float(p);

@@ -1,0 +1,42 @@
+// math.inc: the vector macros. 5D results print with 6 decimals: POV-Ray
+// keeps 5D vectors in single precision.
+#version 3.7;
+#include "math.inc"
+#macro S(N, V) #debug concat(N, " ", str(V, 0, 9), "\n") #end
+#macro V3(N, V) #debug concat(N, " ", vstr(3, V, ",", 0, 9), "\n") #end
+#macro V5(N, V) #debug concat(N, " ", vstr(5, V, ",", 0, 6), "\n") #end
+V3("VSqr", VSqr(<1,-2,3>))
+V3("VPow", VPow(<1,2,3>, 2.5))
+V5("VPow5D", VPow5D(<1,2,3,4,5>, 2))
+S("VEq", VEq(<1,2,3>, <1,2,3>)) S("VEq", VEq(<1,2,3>, <1,2,3.1>))
+S("VEq5D", VEq5D(<1,2,3,4,5>, <1,2,3,4,5>)) S("VEq5D", VEq5D(<1,2,3,4,5>, <1,2,3,4,6>))
+S("VZero", VZero(<0,0,0>)) S("VZero", VZero(<0,1e-12,0>))
+S("VZero5D", VZero5D(<0,0,0,0,0>)) S("VZero5D", VZero5D(<0,0,0,0,1>))
+S("VLength5D", VLength5D(<1,2,3,4,5>))
+V5("VNormalize5D", VNormalize5D(<1,2,3,4,5>))
+S("VDot5D", VDot5D(<1,2,3,4,5>, <5,4,3,2,1>))
+S("VCos_Angle", VCos_Angle(<1,0,0>, <1,1,0>))
+S("VAngle", VAngle(<1,0,0>, <1,1,0>)) S("VAngleD", VAngleD(<1,0,0>, <1,1,0>))
+S("VAngleD2", VAngleD(<1,2,3>, <-3,1,0.5>))
+S("VRotation", VRotation(<1,0,0>, <0,1,0>, z)) S("VRotationD", VRotationD(<1,0,0>, <0,1,0>, z))
+S("VRotationD -z", VRotationD(<1,0,0>, <0,1,0>, -z)) S("VRotationD 0", VRotationD(<1,0,0>, <0,-1,0>, <0,0,0>))
+S("VRotationD tilt", VRotationD(<1,0,0>, <0,1,0>, <0,0.3,1>))
+S("VRotationD 135", VRotationD(<1,0,0>, <-1,-1,0>, z))
+S("VDist", VDist(<1,2,3>, <4,6,3>))
+V3("VPerp_To_Vector x", VPerp_To_Vector(x))
+V3("VPerp_To_Vector y", VPerp_To_Vector(y))
+V3("VPerp_To_Vector z", VPerp_To_Vector(z))
+V3("VPerp_To_Vector 123", VPerp_To_Vector(<1,2,3>))
+V3("VPerp_To_Vector 321", VPerp_To_Vector(<3,-2,1>))
+V3("VPerp_To_Vector 0", VPerp_To_Vector(<0,0,0>))
+V3("VPerp_To_Vector -y", VPerp_To_Vector(<0,-2,0>))
+V3("VPerp_To_Vector 110", VPerp_To_Vector(<1,1,0>))
+V3("VPerp_To_Vector 011", VPerp_To_Vector(<0,1,1>))
+V3("VPerp_To_Plane", VPerp_To_Plane(<1,0,0>, <1,1,0>))
+V3("VPerp_To_Plane2", VPerp_To_Plane(<1,2,3>, <3,-1,2>))
+V3("VPerp_Adjust", VPerp_Adjust(<1,1,0>, <1,0,0>))
+V3("VPerp_Adjust2", VPerp_Adjust(<1,2,3>, <0,2,1>))
+V3("VProject_Plane", VProject_Plane(<1,2,3>, <0,2,1>))
+V3("VProject_Axis", VProject_Axis(<1,2,3>, <0,2,1>))
+S("VMin", VMin(<3,-1,2>)) S("VMax", VMax(<3,-1,2>))
+V3("VWith_Len", VWith_Len(<1,2,2>, 6))
