@@ -3,8 +3,8 @@
 //   Dull, Shiny, Glossy, Phong_Dull,
 //   Phong_Shiny, Phong_Glossy, Luminous, Mirror.
 // The spheres stand before a checkered wall inside a sky-to-ground gradient
-// so that the reflections show (a far camera with a narrow view, nearly
-// orthographic).
+// so that reflections and transparency show (a far camera with a narrow view,
+// nearly orthographic).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #include "finish.inc"
@@ -19,17 +19,17 @@ sphere { 0, 1000 hollow no_shadow
 	finish { ambient 1 diffuse 0 } }
 plane { z, 1 pigment { checker rgb 0.85 rgb 0.25 scale 0.5 } finish { ambient 0.3 diffuse 0.6 } }
 
-// Swatch(I, Body): a sphere in cell I (from 0, left to right, then top to
-// bottom) with the given texture, pigment or material statements.
-#macro Swatch(I)
-	sphere { <mod(I, Cols) - (Cols - 1) / 2, (Rows - 1) / 2 - div(I, Cols), 0>, 0.44
-#end
+// Cell(I): the centre of cell I (from 0, left to right, then top to bottom).
+#macro Cell(I) <mod(I, Cols) - (Cols - 1) / 2, (Rows - 1) / 2 - div(I, Cols), 0> #end
+// Swatch(I) ... }: a sphere at the origin, with the materials that follow,
+// moved to cell I by "translate Cell(I)" before the closing brace.
+#macro Swatch(I) sphere { 0, 0.44 #end
 
-Swatch(0) pigment { rgb <0.85, 0.3, 0.2> } finish { Dull } }
-Swatch(1) pigment { rgb <0.85, 0.3, 0.2> } finish { Shiny } }
-Swatch(2) pigment { rgb <0.85, 0.3, 0.2> } finish { Glossy } }
-Swatch(3) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Dull } }
-Swatch(4) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Shiny } }
-Swatch(5) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Glossy } }
-Swatch(6) pigment { rgb <0.85, 0.3, 0.2> } finish { Luminous } }
-Swatch(7) pigment { rgb <0.85, 0.3, 0.2> } finish { Mirror } }
+Swatch(0) pigment { rgb <0.85, 0.3, 0.2> } finish { Dull } translate Cell(0) }
+Swatch(1) pigment { rgb <0.85, 0.3, 0.2> } finish { Shiny } translate Cell(1) }
+Swatch(2) pigment { rgb <0.85, 0.3, 0.2> } finish { Glossy } translate Cell(2) }
+Swatch(3) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Dull } translate Cell(3) }
+Swatch(4) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Shiny } translate Cell(4) }
+Swatch(5) pigment { rgb <0.85, 0.3, 0.2> } finish { Phong_Glossy } translate Cell(5) }
+Swatch(6) pigment { rgb <0.85, 0.3, 0.2> } finish { Luminous } translate Cell(6) }
+Swatch(7) pigment { rgb <0.85, 0.3, 0.2> } finish { Mirror } translate Cell(7) }
