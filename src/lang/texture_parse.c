@@ -700,7 +700,9 @@ static struct map_entry *list_entry(struct blend_map **mp, enum map_kind kind, c
 }
 
 /* Complete a block pattern's list with POV-Ray's defaults for the entries
- * not written. */
+ * not written: the pattern's default colours in a list of colours, black
+ * in a list of pigments (measured: `checker pigment { rgb 0.25 }` is black
+ * in its second cell, for every block pattern). */
 static void finish_list(struct parser *p, struct blend_map *m, const struct pattern *pt)
 {
 	int max = pattern_block_entries(pt->kind);
@@ -710,11 +712,10 @@ static void finish_list(struct parser *p, struct blend_map *m, const struct patt
 		struct map_entry *e = &m->e[i];
 		memset(e, 0, sizeof *e);
 		e->value = i;
-		e->color = pattern_block_default(pt->kind, i);
 		if (m->kind == MAP_PIGMENT) {
-			struct pigment *pg = pigment_new();
-			pg->color = e->color;
-			e->item = pg;
+			e->item = pigment_new();
+		} else if (m->kind == MAP_COLOR) {
+			e->color = pattern_block_default(pt->kind, i);
 		} else if (m->kind == MAP_TEXTURE) {
 			e->item = default_texture(p);
 		}

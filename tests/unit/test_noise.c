@@ -337,8 +337,22 @@ static void test_cells_crackle_character(void **state)
 		assert_true(cv >= 0 && cv <= 1);
 	}
 	assert_true(lo < 0.05 && hi > 0.4);
-	/* solid: constant near a feature point */
-	k.n[3] = 1;
+	/* offset (f[1], where the parser puts it) is added; metric (f[0]) 1
+	 * measures city-block distances, never shorter than Euclidean ones */
+	struct pattern o = pattern_make(PAT_CRACKLE), m1 = pattern_make(PAT_CRACKLE);
+	o.f[1] = 0.2;
+	m1.f[0] = 1;
+	m1.form = v3(1, 0, 0);
+	k.form = v3(1, 0, 0);
+	for (int i = 0; i < 50; i++) {
+		vec3 p = v3(i * 0.31, 0.7 - i * 0.11, i * 0.17);
+		assert_true(raw_at(&m1, p) >= raw_at(&k, p) - 1e-12);
+	}
+	k.form = v3(-1, 1, 0);
+	struct pattern k0 = pattern_make(PAT_CRACKLE);
+	assert_near(raw_at(&o, v3(0.3, 0.4, 0.5)), raw_at(&k0, v3(0.3, 0.4, 0.5)) + 0.2, 1e-12);
+	/* solid (n[0]): constant near a feature point */
+	k.n[0] = 1;
 	assert_near(raw_at(&k, v3(0.5, 0.5, 0.5)), raw_at(&k, v3(0.5001, 0.5, 0.5)), 0);
 }
 
