@@ -300,6 +300,11 @@ static void parse_pattern_type(struct parser *p, struct pattern *pt, enum blk bl
 		parse_error_at(p, at, "the facets pattern can only be used in a normal, not in a %s", blk_names[blk]);
 	pattern_clear(pt);
 	*pt = pattern_with_defaults(k);
+	/* global_settings { noise_generator } read before the pattern is its
+	 * generator (the renderer passes the scene's to the rest, which also
+	 * covers a global_settings after the pattern, as in POV-Ray). */
+	if (p->scene && p->scene->gs.noise_generator != 2)
+		pt->noise_generator = p->scene->gs.noise_generator;
 	if (k == PAT_OBJECT) {
 		/* object '{' (IDENT | OBJECT) LIST_A [','] LIST_B '}': the list
 		 * is the block's, so the caller reads it and the '}' (see

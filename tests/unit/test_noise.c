@@ -368,6 +368,20 @@ static void test_ripples_waves_character(void **state)
 	}
 }
 
+/* number_of_waves (pattern_ctx.number_of_waves, from global_settings)
+ * changes the sources of ripples and waves; 0 means POV-Ray's 10. */
+static void test_number_of_waves(void **state)
+{
+	(void)state;
+	struct pattern r = pattern_make(PAT_RIPPLES), w = pattern_make(PAT_WAVES);
+	struct pattern_ctx c10 = {.p = v3(0.3, 0.4, 0.5)}, c3 = c10, c10b = c10;
+	c3.number_of_waves = 3;
+	c10b.number_of_waves = 10;
+	assert_true(fabs(pattern_value(&r, &c10) - pattern_value(&r, &c3)) > 1e-6);
+	assert_true(fabs(pattern_value(&w, &c10) - pattern_value(&w, &c3)) > 1e-6);
+	assert_near(pattern_value(&r, &c10), pattern_value(&r, &c10b), 0);
+}
+
 static void test_special_normals(void **state)
 {
 	(void)state;
@@ -404,6 +418,7 @@ int main(void)
 		cmocka_unit_test(test_warp_cubic),
 		cmocka_unit_test(test_warp_order),
 		cmocka_unit_test(test_cells_crackle_character),
+		cmocka_unit_test(test_number_of_waves),
 		cmocka_unit_test(test_ripples_waves_character),
 		cmocka_unit_test(test_special_normals),
 	};
