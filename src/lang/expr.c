@@ -276,15 +276,31 @@ static void color_components(struct parser *p, struct value *c)
 	}
 }
 
-/* rgb/rgbf/rgbt/rgbft/srgb... VECTOR: a colour from a vector expression. */
+static bool is_srgb_kw(enum kw k)
+{
+	return k == KW_SRGB || k == KW_SRGBF || k == KW_SRGBT || k == KW_SRGBFT;
+}
+
+/* rgb/rgbf/rgbt/rgbft/srgb... VECTOR: a colour from a vector expression.
+ * An sRGB colour is decoded to linear light, then brought to the working
+ * gamma (measured: with assumed_gamma 2.2, srgb 0.5 is 0.214^(1/2.2));
+ * before assumed_gamma is set it is POV-Ray's parse error. */
 static struct value parse_color_keyword(struct parser *p, enum kw k)
 {
 	struct srcpos at = parse_peek(p)->pos;
+	if (is_srgb_kw(k) && !p->scene->gs.assumed_gamma_set)
+		parse_error_at(p, at, "an sRGB color (%s) cannot be used before global_settings { assumed_gamma } is set",
+		               kw_names[k]);
 	parse_advance(p);
 	struct value e = parse_binary(p, 4, false);
 	need_numeric(p, &e, kw_names[k]);
 	double c[5];
 	parse_keyword_color(k, e.v, e.n, e.kind == VAL_FLOAT, c);
+	double g = p->scene->gs.assumed_gamma;
+	if (is_srgb_kw(k) && g != 1.0 && g > 0)
+		for (int i = 0; i < 3; i++)
+			if (c[i] > 0)
+				c[i] = pow(c[i], 1.0 / g);
 	struct value r = val_vector(5, c, VAL_COLOR, at);
 	color_components(p, &r);
 	return r;

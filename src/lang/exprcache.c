@@ -338,8 +338,12 @@ static void primary(struct compiler *c, bool rel)
 	case KW_T: emit_const(c, 4, 0, 0, 0, 1); return;
 	case KW_U: emit_const(c, 2, 1, 0, 0, 0); return;
 	case KW_V: emit_const(c, 2, 0, 1, 0, 0); return;
-	case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT:
-	case KW_SRGB: case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT: {
+	case KW_SRGB: case KW_SRGBF: case KW_SRGBT: case KW_SRGBFT:
+		/* sRGB colours depend on assumed_gamma, which may change or not
+		 * be set yet: the full parser reads them every time. */
+		c->ok = false;
+		return;
+	case KW_RGB: case KW_RGBF: case KW_RGBT: case KW_RGBFT: {
 		/* expr.c's parse_color_keyword: a binary of strength 4, then
 		 * optional component keywords, which need the full parser. */
 		binary(c, 4, false, false);

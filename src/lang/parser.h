@@ -277,9 +277,22 @@ void parse_texture(struct parser *p, struct texture **tex);
 /* A texture statement layered on top of *tex (NULL: none yet), as
  * several texture statements on one object are. */
 void parse_texture_layer(struct parser *p, struct texture **tex);
-/* '{' PATTERN { pattern_modifier | transformation } '}' (the body of
+/* Patterns (pattern_parse.c). parse_at_pattern: is the current token a
+ * pattern keyword (its kind in *k)? parse_pattern_type replaces *pt by the
+ * pattern there with its arguments, for the given use (facets only in a
+ * normal); an `object` pattern's list and '}' are left to the caller.
+ * parse_pattern_modifier reads one modifier into *pt and returns true, or
+ * reads nothing and returns false. parse_pattern_block reads
+ * '{' PATTERN { pattern_modifier | transformation } '}' (the body of
  * function { pattern { } }) into *pt. */
+enum pattern_use { PATTERN_IN_PIGMENT, PATTERN_IN_NORMAL, PATTERN_IN_TEXTURE };
+bool parse_at_pattern(struct parser *p, enum pattern_kind *k);
+void parse_pattern_type(struct parser *p, struct pattern *pt, enum pattern_use use);
+bool parse_pattern_modifier(struct parser *p, struct pattern *pt);
 void parse_pattern_block(struct parser *p, struct pattern *pt);
+/* A pigment body (what follows `pigment {`) up to and including `end`,
+ * from black; the caller owns the result (texture_parse.c). */
+struct pigment *parse_pigment_body(struct parser *p, enum tok_kind end);
 /* The layers of top (copied where shared) with under below its last
  * layer; takes both references and returns the result's. */
 struct texture *parse_layer_onto(struct texture *top, struct texture *under);

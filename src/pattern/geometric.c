@@ -105,37 +105,38 @@ PATTERN_FN(cubic)
 }
 
 /* Unit squares in the x-z plane in four colours, each square's four
- * neighbours different from it: colour = (cell x mod 2) + 2 (cell z mod 2). */
+ * neighbours different from it. Measured: with (a, b) the parities of the
+ * cell's x and z, (0, 0) is entry 0, (0, 1) entry 1, (1, 1) entry 2 and
+ * (1, 0) entry 3. */
 PATTERN_FN(square)
 {
 	(void)pt; (void)ctx;
 	double ix = floor(q.x + BLOCK_EPS), iz = floor(q.z + BLOCK_EPS);
-	double a = fabs(fmod(ix, 2.0)), b = fabs(fmod(iz, 2.0));
-	return a + 2.0 * b;
+	int a = (int)fabs(fmod(ix, 2.0)), b = (int)fabs(fmod(iz, 2.0));
+	static const int entry[2][2] = {{0, 1}, {3, 2}};
+	return entry[a][b];
 }
 
-/* Equilateral triangles with unit sides in the x-z plane, in six colours:
- * the six triangles around each vertex of the lattice are the six colours,
- * so that no two triangles sharing an edge or a vertex direction match.
- * Rows of height √3/2 along z; in each row the triangles alternate
- * pointing up and down. */
+/* Equilateral triangles with unit sides in the x-z plane, an edge on
+ * z = 0, in six colours: the six triangles around every vertex are the
+ * six entries. In the sheared coordinates u = x - z/sqrt(3), w = z/(sqrt(3)/2)
+ * the lattice is unit squares, each cut by its diagonal into a triangle
+ * pointing to +z (fu + fw < 1) and one pointing to -z. Measured: along the
+ * row 0 <= z < sqrt(3)/2 from x = 0 the triangles are entries 0 3 4 5 2 1,
+ * repeating every 3 units, and each row down moves that sequence one
+ * square of u to the left. */
 PATTERN_FN(triangular)
 {
 	(void)pt; (void)ctx;
-	double h = SQRT3 * 0.5;
-	double row = floor(q.z / h + BLOCK_EPS);
-	double fz = q.z / h - row;                  /* height in the row, [0, 1) */
-	double u = q.x - 0.5 * row;                 /* shear: the row's lattice starts at row/2 */
-	double col = floor(u + BLOCK_EPS);
-	double fu = u - col;
-	/* the lower-left triangle of the rhombus (fu + fz < 1) points up */
-	int up = fu + fz < 1.0;
-	/* the vertex pattern repeats every 3 lattice steps in the sheared
-	 * coordinates; each rhombus holds two triangles */
-	double k = fmod(col - row, 3.0);
+	double w = q.z / (SQRT3 * 0.5) + BLOCK_EPS;
+	double u = q.x - q.z / SQRT3 + BLOCK_EPS;
+	double row = floor(w), col = floor(u);
+	bool up = (u - col) + (w - row) < 1.0;
+	int k = (int)fmod(col - row, 3.0);
 	if (k < 0)
-		k += 3.0;
-	return up ? k : k + 3.0;
+		k += 3;
+	static const int up_entry[3] = {0, 4, 2}, down_entry[3] = {3, 5, 1};
+	return up ? up_entry[k] : down_entry[k];
 }
 
 /* 1 inside the object, 0 outside. */

@@ -224,14 +224,14 @@ PATTERN_FN(crackle)
 {
 	(void)ctx;
 	struct nearest nr;
-	double metric = pt->f[1] != 0 ? pt->f[1] : 2;
+	double metric = pt->f[0] != 0 ? pt->f[0] : 2;      /* pattern.h: metric f[0], offset f[1], solid n[0] */
 	crackle_search(q, metric, &nr);
-	if (pt->n[3])
+	if (pt->n[0])
 		return nr.value;
 	vec3 form = pt->form;
 	if (form.x == 0 && form.y == 0 && form.z == 0)
 		form = v3(-1, 1, 0);
-	return form.x * nr.d[0] + form.y * nr.d[1] + form.z * nr.d[2] + pt->f[2];
+	return form.x * nr.d[0] + form.y * nr.d[1] + form.z * nr.d[2] + pt->f[1];
 }
 
 /* facets as a value (it is a normal pattern): the nearest cell's value. */

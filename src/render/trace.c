@@ -227,10 +227,12 @@ static rgb surface_filter(const struct texture *t, const struct surface *s)
 	return f;
 }
 
-/* Fill the pattern contexts of s for a hit h on s->obj. */
-static void surface_contexts(struct surface *s, const struct hit *h, bool uv_wanted)
+/* Fill the pattern contexts of s for a hit h on s->obj; gs gives the
+ * noise generator of patterns without their own and the number of waves. */
+static void surface_contexts(struct surface *s, const struct hit *h, bool uv_wanted, const struct global_settings *gs)
 {
-	s->ctx = (struct pattern_ctx){.p = s->pt, .normal = s->n, .dir = s->dir, .noise_generator = 2};
+	s->ctx = (struct pattern_ctx){.p = s->pt, .normal = s->n, .dir = s->dir,
+	                              .noise_generator = gs->noise_generator, .number_of_waves = gs->number_of_waves};
 	s->uvctx = s->ctx;
 	double uv[2] = {0, 0};
 	const struct object *o = s->obj;
@@ -266,7 +268,7 @@ static rgb light_through(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, doubl
 		s.pt = v3_madd(sr.org, sr.dir, h.t);
 		s.dir = ldir;
 		s.n = object_normal(h.obj, s.pt, &h);
-		surface_contexts(&s, &h, (p->features & FEAT_UV) != 0);
+		surface_contexts(&s, &h, (p->features & FEAT_UV) != 0, &p->scene->gs);
 		const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
 		rgb f = surface_filter(tex ? tex : h.obj->tex, &s);
 		lc = rgb_mul(lc, f);
@@ -582,7 +584,7 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 	s.in = h.obj->interior ? h.obj->interior : &default_interior;
 	if (p->features & FEAT_MEDIA)
 		s.leaving = medium_has(med, s.in);
-	surface_contexts(&s, &h, (p->features & FEAT_UV) != 0);
+	surface_contexts(&s, &h, (p->features & FEAT_UV) != 0, &p->scene->gs);
 	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
 	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
 	if (fading)

@@ -53,9 +53,9 @@ static const float brick_mortar[3] = {0.5f, 0.5f, 0.5f}, brick_red[3] = {0.6f, 0
 static const float *const list_brick[] = {brick_mortar, brick_red};
 static const float c_yellow[3] = {1, 1, 0}, c_cyan[3] = {0, 1, 1}, c_magenta[3] = {1, 0, 1};
 static const float *const list_cubic[] = {block_red, block_green, block_blue, c_yellow, c_cyan, c_magenta};
-/* square and triangular: the manual's order (POV-Ray 3.7.0 lacks them) */
-static const float *const list_square[] = {block_blue, block_green, block_red, c_yellow};
-static const float *const list_triangular[] = {block_blue, block_green, block_red, c_magenta, c_cyan, c_yellow};
+/* square and triangular: measured in POV-Ray 3.7.0 (function { pigment { square } }) */
+static const float *const list_square[] = {block_red, block_green, block_blue, c_yellow};
+static const float *const list_triangular[] = {block_red, block_green, block_blue, c_yellow, c_cyan, c_magenta};
 
 static const struct builtin_map *builtin_map(enum pattern_kind k)
 {

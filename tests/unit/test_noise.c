@@ -337,8 +337,22 @@ static void test_cells_crackle_character(void **state)
 		assert_true(cv >= 0 && cv <= 1);
 	}
 	assert_true(lo < 0.05 && hi > 0.4);
-	/* solid: constant near a feature point */
-	k.n[3] = 1;
+	/* offset (f[1], where the parser puts it) is added; metric (f[0]) 1
+	 * measures city-block distances, never shorter than Euclidean ones */
+	struct pattern o = pattern_make(PAT_CRACKLE), m1 = pattern_make(PAT_CRACKLE);
+	o.f[1] = 0.2;
+	m1.f[0] = 1;
+	m1.form = v3(1, 0, 0);
+	k.form = v3(1, 0, 0);
+	for (int i = 0; i < 50; i++) {
+		vec3 p = v3(i * 0.31, 0.7 - i * 0.11, i * 0.17);
+		assert_true(raw_at(&m1, p) >= raw_at(&k, p) - 1e-12);
+	}
+	k.form = v3(-1, 1, 0);
+	struct pattern k0 = pattern_make(PAT_CRACKLE);
+	assert_near(raw_at(&o, v3(0.3, 0.4, 0.5)), raw_at(&k0, v3(0.3, 0.4, 0.5)) + 0.2, 1e-12);
+	/* solid (n[0]): constant near a feature point */
+	k.n[0] = 1;
 	assert_near(raw_at(&k, v3(0.5, 0.5, 0.5)), raw_at(&k, v3(0.5001, 0.5, 0.5)), 0);
 }
 
@@ -352,6 +366,20 @@ static void test_ripples_waves_character(void **state)
 		assert_true(a >= 0 && a <= 1);
 		assert_true(b >= 0 && b <= 1);
 	}
+}
+
+/* number_of_waves (pattern_ctx.number_of_waves, from global_settings)
+ * changes the sources of ripples and waves; 0 means POV-Ray's 10. */
+static void test_number_of_waves(void **state)
+{
+	(void)state;
+	struct pattern r = pattern_make(PAT_RIPPLES), w = pattern_make(PAT_WAVES);
+	struct pattern_ctx c10 = {.p = v3(0.3, 0.4, 0.5)}, c3 = c10, c10b = c10;
+	c3.number_of_waves = 3;
+	c10b.number_of_waves = 10;
+	assert_true(fabs(pattern_value(&r, &c10) - pattern_value(&r, &c3)) > 1e-6);
+	assert_true(fabs(pattern_value(&w, &c10) - pattern_value(&w, &c3)) > 1e-6);
+	assert_near(pattern_value(&r, &c10), pattern_value(&r, &c10b), 0);
 }
 
 static void test_special_normals(void **state)
@@ -390,6 +418,7 @@ int main(void)
 		cmocka_unit_test(test_warp_cubic),
 		cmocka_unit_test(test_warp_order),
 		cmocka_unit_test(test_cells_crackle_character),
+		cmocka_unit_test(test_number_of_waves),
 		cmocka_unit_test(test_ripples_waves_character),
 		cmocka_unit_test(test_special_normals),
 	};

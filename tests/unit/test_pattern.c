@@ -554,12 +554,38 @@ static void test_wave_edges(void **state)
 	assert_true(fabs(value_at(&pt, v3(0.3, 0.7, 1.1)) - 0.2061074042) < 1e-10);
 }
 
+/* square and triangular: the entry index at points where POV-Ray 3.7.0
+ * printed function { pigment { square color rgb 0.1 color rgb 0.2 ... } }
+ * (the grey 0.1 (i + 1) names entry i); POV-Ray refuses them in
+ * function { pattern { } }. */
+static void test_square_triangular(void **state)
+{
+	(void)state;
+	static const struct { enum pattern_kind k; double x, z; int entry; } pts[] = {
+		{PAT_SQUARE, 0.5, 0.5, 0}, {PAT_SQUARE, 0.5, 1.5, 1}, {PAT_SQUARE, 1.5, 1.5, 2},
+		{PAT_SQUARE, 1.5, 0.5, 3}, {PAT_SQUARE, -2.95, -2.95, 2}, {PAT_SQUARE, 2.5, 3.5, 1},
+		{PAT_TRIANGULAR, 0.5, 0.25, 0}, {PAT_TRIANGULAR, 1.0, 0.6, 3}, {PAT_TRIANGULAR, 1.5, 0.25, 4},
+		{PAT_TRIANGULAR, 2.0, 0.6, 5}, {PAT_TRIANGULAR, 2.5, 0.25, 2}, {PAT_TRIANGULAR, 3.0, 0.6, 1},
+		{PAT_TRIANGULAR, 0.5, -0.25, 5}, {PAT_TRIANGULAR, 1.0, -0.6, 2}, {PAT_TRIANGULAR, 1.5, -0.25, 1},
+		{PAT_TRIANGULAR, 2.0, -0.6, 0}, {PAT_TRIANGULAR, 2.5, -0.25, 3}, {PAT_TRIANGULAR, 3.0, -0.6, 4},
+	};
+	for (size_t i = 0; i < sizeof pts / sizeof pts[0]; i++) {
+		struct pattern pt = pattern_make(pts[i].k);
+		struct pattern_ctx ctx = {.p = v3(pts[i].x, 0.3, pts[i].z)};
+		double v = pattern_value(&pt, &ctx);
+		if (v != pts[i].entry)
+			printf("%s at (%g, %g): %g, POV-Ray %d\n", pattern_name(pts[i].k), pts[i].x, pts[i].z, v, pts[i].entry);
+		assert_int_equal((int)v, pts[i].entry);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_against_povray),
 		cmocka_unit_test(test_default_waves),
 		cmocka_unit_test(test_wave_edges),
+		cmocka_unit_test(test_square_triangular),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
