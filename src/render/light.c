@@ -85,8 +85,11 @@ struct light_set *light_set_new(const struct prepared *p)
 			s->max_samples = (size_t)L->n1 * (size_t)L->n2;
 	}
 	/* Group 0 (objects outside groups) sees the global lights; group g
-	 * sees the lights of g and of the groups around it, and the global
-	 * ones if it says global_lights. */
+	 * sees its own lights, and the global ones if the outermost group
+	 * around it says global_lights. POV-Ray 3.7 gives an object in nested
+	 * groups the lights of its innermost group only (measured: the
+	 * manual's "inherit" does not happen), and ignores global_lights on
+	 * the inner ones. */
 	s->ngroups = sc->ngroups ? sc->ngroups : 1;
 	s->group = calloc(s->ngroups, sizeof *s->group);
 	s->ngroup = calloc(s->ngroups, sizeof *s->ngroup);
@@ -94,20 +97,16 @@ struct light_set *light_set_new(const struct prepared *p)
 	for (size_t g = 0; g < s->ngroups; g++) {
 		s->group[g] = malloc((s->n ? s->n : 1) * sizeof **s->group);
 		if (!s->group[g]) abort();
+		bool global = g == 0;
+		if (g > 0) {
+			int k = (int)g;
+			for (int guard = 0; sc->groups[k].parent != 0 && guard < 100000; guard++)
+				k = sc->groups[k].parent;
+			global = sc->groups[k].global_lights;
+		}
 		for (size_t i = 0; i < s->n; i++) {
 			int lg = sc->lights[i].group;
-			bool in;
-			if (lg == 0) {
-				in = g == 0 || sc->groups[g].global_lights;
-			} else {
-				in = false;
-				for (int k = (int)g, guard = 0; k != 0 && guard < 100000; k = sc->groups[k].parent, guard++)
-					if (k == lg) {
-						in = true;
-						break;
-					}
-			}
-			if (in)
+			if (lg == 0 ? global : (size_t)lg == g)
 				s->group[g][s->ngroup[g]++] = i;
 		}
 	}
