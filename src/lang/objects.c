@@ -608,6 +608,7 @@ bool parse_is_object_start(enum kw k)
 	case KW_TORUS: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE: case KW_QUADRIC: case KW_CUBIC:
 	case KW_QUARTIC: case KW_POLY: case KW_SUPERELLIPSOID: case KW_MESH: case KW_MESH2:
 	case KW_UNION: case KW_INTERSECTION: case KW_DIFFERENCE: case KW_MERGE: case KW_OBJECT:
+	case KW_LIGHT_GROUP:
 		return true;
 	default:
 		return false;
@@ -811,6 +812,8 @@ static struct object *parse_object_in(struct parser *p, bool child)
 {
 	const struct token *t = parse_peek(p);
 	enum kw k = (enum kw)t->kw;
+	if (k == KW_LIGHT_GROUP)
+		return parse_light_group(p, child);
 	struct srcpos at = t->pos;
 	parse_advance(p);
 	parse_expect(p, TOK_LBRACE);

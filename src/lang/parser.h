@@ -341,6 +341,19 @@ struct xform *parse_transform_value(struct parser *p);
 bool parse_atmos_statement(struct parser *p);
 bool parse_atmos_value(struct parser *p, struct value *out);
 
+/* Lights (light_parse.c). */
+/* light_source { ... } at the current token into *l (which the caller
+ * owns and protects, with parse_free_light, objects included). */
+void parse_light(struct parser *p, struct light *l);
+/* A light_source statement added to the scene (its looks_like object too). */
+void parse_light_statement(struct parser *p);
+/* light_group { ... } at the current token: the union of its objects; its
+ * lights go into the scene. `child` as for parse_object's !scene_level.
+ * The caller owns the result. */
+struct object *parse_light_group(struct parser *p, bool child);
+/* Free a heap `struct light` and what it owns (for parse_own). */
+void parse_free_light(void *light);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an

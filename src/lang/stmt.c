@@ -16,38 +16,7 @@ void parse_free_texture_holder(void *h)
 	free(h);
 }
 
-/* ---- lights and camera ---- */
-
-/* light_source := light_source '{' VECTOR [','] COLOR { light_item } '}' */
-static void parse_light(struct parser *p, struct light *l)
-{
-	struct srcpos at = parse_peek(p)->pos;
-	parse_advance(p);
-	parse_expect(p, TOK_LBRACE);
-	memset(l, 0, sizeof *l);
-	l->kind = LIGHT_POINT;
-	l->srcpos = at;
-	l->pos = parse_vector(p);
-	parse_accept(p, TOK_COMMA);
-	struct rgbft c = parse_color(p);
-	l->color = rgb_of(c);
-	while (!parse_accept(p, TOK_RBRACE)) {
-		struct xform t;
-		if (parse_transform_item(p, &t)) {
-			l->pos = mat_point(&t.fwd, l->pos);
-			continue;
-		}
-		if (parse_accept_kw(p, KW_SHADOWLESS)) {
-			l->shadowless = true;
-			continue;
-		}
-		if (parse_accept_kw(p, KW_POINT_AT)) {
-			(void)parse_vector(p); /* only spotlights use it */
-			continue;
-		}
-		parse_expected(p, "a light_source item or '}'");
-	}
-}
+/* ---- camera ---- */
 
 /* camera := camera '{' [IDENT] [perspective] { camera_item } '}'
  * camera_item := location V | look_at V | angle F | right V | up V
@@ -330,9 +299,9 @@ static bool item_value(struct parser *p, struct value *out)
 	case KW_FOG: case KW_SKY_SPHERE: case KW_RAINBOW:
 		return parse_atmos_value(p, out);
 	case KW_LIGHT_SOURCE: {
-		struct light *l = malloc(sizeof *l);
+		struct light *l = calloc(1, sizeof *l);
 		if (!l) abort();
-		int slot = parse_own(p, l, free_pigment_cb);
+		int slot = parse_own(p, l, parse_free_light);
 		parse_light(p, l);
 		parse_release(p, slot);
 		out->kind = VAL_LIGHT;
@@ -357,12 +326,7 @@ void parse_statement(struct parser *p)
 			return;
 		}
 		switch (k) {
-		case KW_LIGHT_SOURCE: {
-			struct light l;
-			parse_light(p, &l);
-			scene_add_light(p->scene, &l);
-			return;
-		}
+		case KW_LIGHT_SOURCE: parse_light_statement(p); return;
 		case KW_CAMERA: {
 			struct camera c = camera_default();
 			parse_camera(p, &c);

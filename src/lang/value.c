@@ -59,7 +59,10 @@ void val_clear(struct value *v)
 		break;
 	case VAL_MAP: blend_map_unref(v->map); break;
 	case VAL_CAMERA: free(v->cam); break;
-	case VAL_LIGHT: free(v->light); break;
+	case VAL_LIGHT:
+		light_free_parts(v->light);
+		free(v->light);
+		break;
 	case VAL_TRANSFORM: free(v->xf); break;
 	case VAL_MACRO:
 		if (--v->mac->refs == 0) {
@@ -113,7 +116,10 @@ struct value val_copy(const struct value *src)
 		break;
 	case VAL_MAP: v.map = blend_map_ref(src->map); break;
 	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
-	case VAL_LIGHT: v.light = dup_bytes(src->light, sizeof *src->light); break;
+	case VAL_LIGHT:
+		v.light = dup_bytes(src->light, sizeof *src->light);
+		light_copy_parts(v.light);
+		break;
 	case VAL_TRANSFORM: v.xf = dup_bytes(src->xf, sizeof *src->xf); break;
 	case VAL_MACRO: v.mac->refs++; break;
 	case VAL_ARRAY: v.arr->refs++; break;

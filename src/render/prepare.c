@@ -151,17 +151,32 @@ static unsigned object_features(struct object *o, bool *caster)
 unsigned prepare_features(const struct scene *s)
 {
 	unsigned f = 0;
-	bool shadow_light = false, caster = false;
-	for (size_t i = 0; i < s->nlights; i++)
-		if (!s->lights[i].shadowless)
+	bool shadow_light = false, caster = false, area_light = false;
+	for (size_t i = 0; i < s->nlights; i++) {
+		const struct light *l = &s->lights[i];
+		if (!l->shadowless)
 			shadow_light = true;
+		/* Only the shadows of an area light differ from a point light's. */
+		if (!l->shadowless && l->area && l->size1 * l->size2 > 1)
+			area_light = true;
+		if (l->kind != LIGHT_POINT)
+			f |= FEAT_SPOTLIGHTS;
+		if (l->fade_distance > 0 && l->fade_power > 0)
+			f |= FEAT_LIGHT_FADE;
+	}
 	for (size_t i = 0; i < s->nobjects; i++)
 		f |= object_features(s->objects[i], &caster);
-	/* Without lights no highlight can appear either. */
+	/* Without lights no highlight can appear either; shadowless lights
+	 * make none (as in POV-Ray). */
 	if (s->nlights == 0)
 		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR | FEAT_IRID | FEAT_CAUSTICS);
-	if (shadow_light && caster)
+	if (!shadow_light)
+		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR);
+	if (shadow_light && caster) {
 		f |= FEAT_SHADOWS;
+		if (area_light)
+			f |= FEAT_AREA_LIGHTS;
+	}
 	for (size_t i = 0; i < s->atmos.nfogs; i++)
 		if (s->atmos.fogs[i].distance > 0)
 			f |= FEAT_FOG;
@@ -276,6 +291,10 @@ struct prepared *prepare_scene(struct scene *s)
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
 	p->features = prepare_features(s);
+	/* projected_through objects are intersected by the tracer. */
+	for (size_t i = 0; i < s->nlights; i++)
+		if (s->lights[i].projected_through)
+			object_prepare(s->lights[i].projected_through);
 	if (p->features & FEAT_MEDIA) {
 		/* Interiors are told apart by pointer; the camera starts inside
 		 * those of the objects around it (as in POV-Ray, where a camera

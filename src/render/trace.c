@@ -17,24 +17,30 @@ struct lit {
 	rgb color;   /* what arrives through transparent surfaces; black: in shadow */
 	bool back;   /* the light is behind the face the ray sees */
 	bool on;     /* lights the surface at all */
+	bool highlights; /* makes highlights (shadowless lights make none) */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p)
 {
 	tr->p = p;
 	memset(&tr->stats, 0, sizeof tr->stats);
+	tr->lights = light_set_new(p);
 	size_t n = p->scene->nlights ? p->scene->nlights : 1;
-	tr->last_blocker = calloc(n, sizeof *tr->last_blocker);
+	tr->last_blocker = calloc(tr->lights->slots ? tr->lights->slots : 1, sizeof *tr->last_blocker);
 	tr->lit = calloc(n, sizeof *tr->lit);
 	if (!tr->last_blocker || !tr->lit) abort();
+	area_scratch_init(&tr->area, tr->lights->max_samples);
 }
 
 void tracer_free(struct tracer *tr)
 {
 	free(tr->last_blocker);
 	free(tr->lit);
+	light_set_free(tr->lights);
+	area_scratch_free(&tr->area);
 	tr->last_blocker = NULL;
 	tr->lit = NULL;
+	tr->lights = NULL;
 }
 
 double trace_epsilon(vec3 p, vec3 from)
@@ -65,24 +71,25 @@ bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, d
 	return found;
 }
 
-/* Is the segment from pt toward light li (unit direction ldir, length dist)
+/* Is the segment from pt along the unit direction ldir (length dist)
  * blocked? pt has already been lifted off the surface by eps along the
- * normal. Tries the last blocker of this light first. */
-static bool shadowed(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, double dist, double eps)
+ * normal. Tries first the object that last blocked last-blocker slot
+ * `slot` (a light, or a grid column of an area light). */
+static bool shadowed(struct tracer *tr, size_t slot, vec3 pt, vec3 ldir, double dist, double eps)
 {
 	const struct prepared *p = tr->p;
 	struct ray sr = {pt, ldir};
 	double tmax = dist - 2 * eps;
 	tr->stats.rays[RAY_SHADOW]++;
 	struct hit h;
-	const struct object *last = tr->last_blocker[li];
+	const struct object *last = tr->last_blocker[slot];
 	if (last && object_intersect(last, &sr, 0, tmax, &h)) {
 		tr->stats.shadow_cache_hits++;
 		return true;
 	}
 	const struct object *blk = NULL;
 	if (bvh_occluded(p->bvh, &sr, 0, tmax, OBJ_NO_SHADOW, &blk)) {
-		tr->last_blocker[li] = blk;
+		tr->last_blocker[slot] = blk;
 		return true;
 	}
 	for (size_t i = 0; i < p->nunbounded; i++) {
@@ -90,7 +97,7 @@ static bool shadowed(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, double di
 		if (o->flags & OBJ_NO_SHADOW)
 			continue;
 		if (object_intersect(o, &sr, 0, tmax, &h)) {
-			tr->last_blocker[li] = o;
+			tr->last_blocker[slot] = o;
 			return true;
 		}
 	}
@@ -243,17 +250,17 @@ static void surface_contexts(struct surface *s, const struct hit *h, bool uv_wan
 	s->uvctx.p = v3(uv[0], uv[1], 0);
 }
 
-/* The light li arriving at pt along ldir (length dist) through the
+/* The light lc arriving at pt along ldir (length dist) through the
  * surfaces in between, for a shadow ray starting in medium med: black
  * when an opaque surface blocks it. Transparent surfaces multiply it by
- * their filter (and their fake caustics), interiors by their fading. */
-static rgb light_through(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, double dist, double eps,
+ * their filter (and their fake caustics), interiors by their fading.
+ * `slot` is the last-blocker slot of the light (or grid column). */
+static rgb light_through(struct tracer *tr, size_t slot, rgb lc, vec3 pt, vec3 ldir, double dist, double eps,
                          const struct medium *med)
 {
 	const struct prepared *p = tr->p;
-	rgb lc = p->scene->lights[li].color;
 	if (!(p->features & FEAT_TRANSPARENCY))
-		return shadowed(tr, li, pt, ldir, dist, eps) ? rgb_make(0, 0, 0) : lc;
+		return shadowed(tr, slot, pt, ldir, dist, eps) ? rgb_make(0, 0, 0) : lc;
 	struct ray sr = {pt, ldir};
 	double tmax = dist - 2 * eps, t0 = 0, last = 0;
 	struct medium m = {0};
@@ -292,30 +299,86 @@ static rgb light_through(struct tracer *tr, size_t li, vec3 pt, vec3 ldir, doubl
 	return lc;
 }
 
-/* Light every light casts on s (into tr->lit); false if none reaches. */
+/* How far along the unit direction dir from pt light L passes through its
+ * projected_through object before reaching the light (at most dist; 0:
+ * infinitely far): where its shadows stop. Negative when the way misses
+ * the object, so that no light arrives. */
+static double projected_dist(const struct light_rt *L, vec3 pt, vec3 dir, double dist)
+{
+	struct ray r = {pt, dir};
+	struct hit h;
+	if (!object_intersect(L->projector, &r, 0, dist > 0 ? dist : INFINITY, &h))
+		return -1;
+	return h.t;
+}
+
+/* One shadow test of an area light's sample, for light_area. */
+struct shadow_ctx {
+	struct tracer *tr;
+	const struct light_rt *L;
+	vec3 from;                  /* the lit point, lifted off its surface */
+	double eps;
+	const struct medium *med;
+	rgb lc;                     /* the light's colour there, cone and fading applied */
+};
+
+static rgb area_test(void *vctx, vec3 target, int column)
+{
+	const struct shadow_ctx *c = vctx;
+	vec3 v = v3_sub(target, c->from);
+	double d = v3_len(v);
+	if (d == 0)
+		return c->lc;
+	vec3 dir = v3_scale(v, 1 / d);
+	if (c->L->projector && (d = projected_dist(c->L, c->from, dir, d)) < 0)
+		return rgb_make(0, 0, 0);
+	return light_through(c->tr, c->L->slot + (size_t)column, c->lc, c->from, dir, d, c->eps, c->med);
+}
+
+/* Light every light of s's light group casts on s (into tr->lit); false
+ * if none reaches. */
 static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_wanted)
 {
-	const struct prepared *p = tr->p;
-	const struct scene *sc = p->scene;
+	const struct light_set *ls = tr->lights;
+	size_t g = (size_t)s->obj->light_group < ls->ngroups ? (size_t)s->obj->light_group : 0;
+	if (ls->ngroup[g] < ls->n)
+		for (size_t li = 0; li < ls->n; li++)
+			tr->lit[li].on = false;
 	bool any = false;
-	for (size_t li = 0; li < sc->nlights; li++) {
+	for (size_t k = 0; k < ls->ngroup[g]; k++) {
+		size_t li = ls->group[g][k];
+		const struct light_rt *L = &ls->v[li];
 		struct lit *l = &tr->lit[li];
 		l->on = false;
-		vec3 lv = v3_sub(sc->lights[li].pos, s->pt);
-		double dist = v3_len(lv);
-		if (dist == 0)
+		struct light_ray lr;
+		if (!light_at(L, s->pt, &lr))
 			continue;
-		l->dir = v3_scale(lv, 1.0 / dist);
+		l->dir = lr.dir;
 		double c = v3_dot(s->n, l->dir);
 		if (c == 0)
 			continue;
 		l->back = c < 0;
 		if (l->back && !back_wanted)
 			continue;
+		l->highlights = L->highlights;
 		vec3 side = l->back ? v3_neg(s->n) : s->n;
-		l->color = sc->lights[li].color;
-		if ((p->features & FEAT_SHADOWS) && !sc->lights[li].shadowless)
-			l->color = light_through(tr, li, v3_madd(s->pt, side, s->eps), l->dir, dist, s->eps, s->med);
+		vec3 from = v3_madd(s->pt, side, s->eps);
+		rgb lc = lr.atten == 1 ? L->color : rgb_scale(L->color, lr.atten);
+		l->color = lc;
+		if (L->shadows && lr.dist > 0) {
+			if (L->area) {
+				struct shadow_ctx ctx = {tr, L, from, s->eps, s->med, lc};
+				l->color = light_area(L, from, &lr, &tr->area, area_test, &ctx);
+			} else {
+				double d = lr.dist;
+				if (!L->projector || (d = projected_dist(L, from, lr.dir, d)) >= 0)
+					l->color = light_through(tr, L->slot, lc, from, lr.dir, d, s->eps, s->med);
+				else
+					l->color = rgb_make(0, 0, 0);
+			}
+		} else if (L->projector && projected_dist(L, from, lr.dir, lr.dist) < 0) {
+			l->color = rgb_make(0, 0, 0);
+		}
 		l->on = rgb_max(l->color) > 0;
 		any |= l->on;
 	}
@@ -468,7 +531,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 					}
 					acc = rgb_add(acc, d);
 				}
-				if (!lt->back) {
+				if (!lt->back && lt->highlights) {
 					if ((feat & FEAT_PHONG) && f->phong > 0) {
 						double c = v3_dot(v3_reflect(s->dir, n), lt->dir);
 						if (c > 0) {

@@ -6,6 +6,7 @@
 #ifndef LUCENT_TRACE_H
 #define LUCENT_TRACE_H
 
+#include "render/light.h"
 #include "render/prepare.h"
 #include "render/stats.h"
 
@@ -14,8 +15,11 @@ struct lit;
 struct tracer {
 	const struct prepared *p;
 	struct stats stats;
-	const struct object **last_blocker; /* per light: the object that last shadowed it */
+	const struct object **last_blocker; /* per light (per grid column of an area light): the
+	                                     * object that last shadowed it */
 	struct lit *lit;                     /* per light: scratch for one surface's lighting */
+	struct light_set *lights;            /* the lights as sampled, and who sees which */
+	struct area_scratch area;            /* area-light samples of the point being lit */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);

@@ -81,6 +81,7 @@ struct object {
 	struct object *bound;     /* bounded_by: rays that miss it skip the object; owned */
 	struct srcpos pos;        /* where the statement began */
 	unsigned id;              /* creation order, for stable output */
+	int light_group;          /* the light_group it belongs to (0: none): which lights reach it */
 };
 
 /* Initialise the header of a freshly allocated primitive. */

@@ -32,6 +32,7 @@ void scene_free(struct scene *s)
 		object_free(s->lights[i].projected_through);
 	}
 	free(s->lights);
+	free(s->groups);
 	atmos_free(&s->atmos);
 	free(s);
 }
@@ -55,4 +56,17 @@ void scene_add_light(struct scene *s, const struct light *l)
 		if (!s->lights) abort();
 	}
 	s->lights[s->nlights++] = *l;
+}
+
+int scene_add_light_group(struct scene *s, int parent)
+{
+	if (s->ngroups == 0)
+		s->ngroups = 1;
+	if (s->ngroups >= s->cap_groups) {
+		s->cap_groups = s->cap_groups ? s->cap_groups * 2 : 8;
+		s->groups = realloc(s->groups, s->cap_groups * sizeof *s->groups);
+		if (!s->groups) abort();
+	}
+	s->groups[s->ngroups] = (struct light_group){.parent = parent};
+	return (int)s->ngroups++;
 }

@@ -29,6 +29,8 @@ struct scene {
 	size_t nobjects, cap_objects;
 	struct light *lights;
 	size_t nlights, cap_lights;
+	struct light_group *groups; /* light_group statements; [0] unused (no group) */
+	size_t ngroups, cap_groups;
 	struct camera camera;
 	struct rgbft background;
 	struct atmosphere atmos;
@@ -42,5 +44,7 @@ void scene_free(struct scene *s);
 /* Takes ownership of o. */
 void scene_add_object(struct scene *s, struct object *o);
 void scene_add_light(struct scene *s, const struct light *l);
+/* A new light group inside group `parent` (0: at the top); its number. */
+int scene_add_light_group(struct scene *s, int parent);
 
 #endif

@@ -1,0 +1,313 @@
+/* light.c: sampling lights (see light.h). The formulas are POV-Ray 3.7's,
+ * measured by rendering tiny scenes with it:
+ * - spotlight: 1 inside `radius`, 0 outside `falloff`, between them the
+ *   smoothstep t²(3 − 2t) of t = (cos a − cos falloff) / (cos radius −
+ *   cos falloff), times cos(a)^tightness; a falloff below the radius is
+ *   the radius (a hard edge);
+ * - cylinder: the same in the distance r from the axis, t = (falloff − r)
+ *   / (falloff − radius), times (1 − r / falloff)^tightness; the light runs
+ *   along the axis (shading and shadows, like a parallel light), and points
+ *   behind it get none;
+ * - fading: 2 / (1 + (d / fade_distance)^fade_power), d the distance to
+ *   the light's location (for parallel lights too);
+ * - area lights: sample (i, j) of an n1 x n2 grid sits at
+ *   pos + axis1 (i / (n1 − 1) − ½) + axis2 (j / (n2 − 1) − ½); the shading
+ *   uses pos, only shadows use the grid. The grid is sampled by blocks:
+ *   a block is the mean of its four corners when its sides are at most one
+ *   step, or when it is at level `adaptive` or deeper and its corners agree
+ *   (no two differ by more than 0.1, summed over r, g, b); otherwise it is
+ *   the mean of its halves in each direction that is longer than one step,
+ *   [a, ⌊(a+b)/2⌋] and [⌈(a+b)/2⌉, b]. Without `adaptive` every block is
+ *   split. So 5 samples weigh 1/8 2/8 2/8 2/8 1/8, and 4 samples 1/4 each;
+ * - circular: the square's point (u, v) in [−1, 1]² moves along its
+ *   radius to length max(|u|, |v|);
+ * - orient: the grid is turned to face the point: axis1 along d × z (d ×
+ *   y when d is nearly ±z), axis2 along d × axis1, with their lengths. */
+#include "render/light.h"
+
+#include "math/hash.h"
+#include "scene/object.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { PURPOSE_JITTER_U = 0x4c4a5501, PURPOSE_JITTER_V = 0x4c4a5602 };
+
+struct light_set *light_set_new(const struct prepared *p)
+{
+	const struct scene *sc = p->scene;
+	unsigned feat = p->features;
+	struct light_set *s = calloc(1, sizeof *s);
+	if (!s) abort();
+	s->n = sc->nlights;
+	s->v = calloc(s->n ? s->n : 1, sizeof *s->v);
+	if (!s->v) abort();
+	for (size_t i = 0; i < s->n; i++) {
+		const struct light *l = &sc->lights[i];
+		struct light_rt *L = &s->v[i];
+		L->l = l;
+		L->pos = l->pos;
+		L->color = l->color;
+		vec3 ax = v3_sub(l->point_at, l->pos);
+		double al = v3_len(ax);
+		L->axis = al > 0 ? v3_scale(ax, 1 / al) : v3(0, 0, 1);
+		L->along_axis = l->parallel || l->kind == LIGHT_CYLINDER;
+		if ((feat & FEAT_SPOTLIGHTS) && l->kind != LIGHT_POINT) {
+			double r = l->radius, f = l->falloff < l->radius ? l->radius : l->falloff;
+			L->spot = l->kind == LIGHT_SPOT;
+			L->cylinder = l->kind == LIGHT_CYLINDER;
+			L->cos_radius = cos(r * (M_PI / 180));
+			L->cos_falloff = cos(f * (M_PI / 180));
+			L->radius = r;
+			L->falloff = f;
+			L->tightness = l->tightness;
+		}
+		L->fade = (feat & FEAT_LIGHT_FADE) && l->fade_distance > 0 && l->fade_power > 0;
+		L->fade_distance = l->fade_distance;
+		L->fade_power = l->fade_power;
+		L->shadows = (feat & FEAT_SHADOWS) && !l->shadowless;
+		L->highlights = !l->shadowless;
+		L->area = L->shadows && (feat & FEAT_AREA_LIGHTS) && l->area && l->size1 * l->size2 > 1;
+		L->n1 = L->area ? l->size1 : 1;
+		L->n2 = L->area ? l->size2 : 1;
+		L->adaptive = l->adaptive;
+		L->jitter = l->jitter;
+		L->circular = l->circular;
+		L->orient = l->orient;
+		L->axis1 = l->axis1;
+		L->axis2 = l->axis2;
+		L->len1 = v3_len(l->axis1);
+		L->len2 = v3_len(l->axis2);
+		L->projector = l->projected_through;
+		L->slot = s->slots;
+		s->slots += (size_t)L->n1;
+		if ((size_t)L->n1 * (size_t)L->n2 > s->max_samples)
+			s->max_samples = (size_t)L->n1 * (size_t)L->n2;
+	}
+	/* Group 0 (objects outside groups) sees the global lights; group g
+	 * sees its own lights, and the global ones if the outermost group
+	 * around it says global_lights. POV-Ray 3.7 gives an object in nested
+	 * groups the lights of its innermost group only (measured: the
+	 * manual's "inherit" does not happen), and ignores global_lights on
+	 * the inner ones. */
+	s->ngroups = sc->ngroups ? sc->ngroups : 1;
+	s->group = calloc(s->ngroups, sizeof *s->group);
+	s->ngroup = calloc(s->ngroups, sizeof *s->ngroup);
+	if (!s->group || !s->ngroup) abort();
+	for (size_t g = 0; g < s->ngroups; g++) {
+		s->group[g] = malloc((s->n ? s->n : 1) * sizeof **s->group);
+		if (!s->group[g]) abort();
+		bool global = g == 0;
+		if (g > 0) {
+			int k = (int)g;
+			for (int guard = 0; sc->groups[k].parent != 0 && guard < 100000; guard++)
+				k = sc->groups[k].parent;
+			global = sc->groups[k].global_lights;
+		}
+		for (size_t i = 0; i < s->n; i++) {
+			int lg = sc->lights[i].group;
+			if (lg == 0 ? global : (size_t)lg == g)
+				s->group[g][s->ngroup[g]++] = i;
+		}
+	}
+	return s;
+}
+
+void light_set_free(struct light_set *s)
+{
+	if (!s) return;
+	for (size_t g = 0; g < s->ngroups; g++)
+		free(s->group[g]);
+	free(s->group);
+	free(s->ngroup);
+	free(s->v);
+	free(s);
+}
+
+/* POV-Ray's smooth edge: 0 at t <= 0, 1 at t >= 1. */
+static double smooth(double t)
+{
+	return t <= 0 ? 0 : t >= 1 ? 1 : t * t * (3 - 2 * t);
+}
+
+bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
+{
+	vec3 lv = v3_sub(L->pos, pt);
+	double d = v3_len(lv);
+	if (L->along_axis) {
+		out->dir = v3_neg(L->axis);
+		/* Shadows are cast between the point and the light's plane. */
+		double h = v3_dot(lv, out->dir);
+		out->dist = h > 0 ? h : 0;
+	} else {
+		if (d == 0)
+			return false;
+		out->dir = v3_scale(lv, 1 / d);
+		out->dist = d;
+	}
+	double atten = 1;
+	if (L->spot && d > 0) {
+		/* The angle between the axis and the way from the light to pt. */
+		double c = -v3_dot(lv, L->axis) / d;
+		if (c < L->cos_falloff)
+			return false;
+		if (c < L->cos_radius)
+			atten = smooth((c - L->cos_falloff) / (L->cos_radius - L->cos_falloff));
+		if (L->tightness != 0)
+			atten *= c > 0 ? pow(c, L->tightness) : 0;
+	} else if (L->cylinder) {
+		double along = -v3_dot(lv, L->axis);
+		if (along < 0)
+			return false;
+		double r = v3_len(v3_madd(lv, L->axis, along));
+		if (r >= L->falloff)
+			return false;
+		if (r > L->radius)
+			atten = smooth((L->falloff - r) / (L->falloff - L->radius));
+		if (L->tightness != 0)
+			atten *= pow(1 - r / L->falloff, L->tightness);
+	}
+	if (L->fade)
+		atten *= 2 / (1 + pow(d / L->fade_distance, L->fade_power));
+	out->atten = atten;
+	return atten > 0;
+}
+
+vec3 light_target(const struct light_rt *L, vec3 pt, const struct light_ray *lr)
+{
+	return L->along_axis ? v3_madd(pt, lr->dir, lr->dist) : L->pos;
+}
+
+void area_scratch_init(struct area_scratch *a, size_t max_samples)
+{
+	size_t n = max_samples ? max_samples : 1;
+	a->val = malloc(n * sizeof *a->val);
+	a->stamp = calloc(n, sizeof *a->stamp);
+	if (!a->val || !a->stamp) abort();
+	a->now = 0;
+	a->n = n;
+}
+
+void area_scratch_free(struct area_scratch *a)
+{
+	free(a->val);
+	free(a->stamp);
+	a->val = NULL;
+	a->stamp = NULL;
+}
+
+/* One area-light evaluation at a point. */
+struct area_run {
+	const struct light_rt *L;
+	struct area_scratch *sc;
+	area_test_fn test;
+	void *ctx;
+	vec3 base;        /* the grid's centre: pos, or the point on the light's plane */
+	vec3 a1, a2;      /* the (oriented) edge vectors */
+	uint32_t hx, hy;  /* the point's hash, for jitter */
+};
+
+/* The result of sample (i, j), tested once per point. */
+static rgb area_sample(struct area_run *r, int i, int j)
+{
+	const struct light_rt *L = r->L;
+	size_t k = (size_t)j * (size_t)L->n1 + (size_t)i;
+	if (r->sc->stamp[k] == r->sc->now)
+		return r->sc->val[k];
+	double u = L->n1 > 1 ? 2.0 * i / (L->n1 - 1) - 1 : 0;
+	double v = L->n2 > 1 ? 2.0 * j / (L->n2 - 1) - 1 : 0;
+	if (L->jitter) {
+		/* Anywhere in the sample's cell. */
+		if (L->n1 > 1)
+			u += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_U) - 0.5) * 2.0 / (L->n1 - 1);
+		if (L->n2 > 1)
+			v += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_V) - 0.5) * 2.0 / (L->n2 - 1);
+	}
+	if (L->circular && (u != 0 || v != 0)) {
+		double m = fmax(fabs(u), fabs(v)) / sqrt(u * u + v * v);
+		u *= m;
+		v *= m;
+	}
+	vec3 target = v3_madd(v3_madd(r->base, r->a1, u / 2), r->a2, v / 2);
+	rgb c = r->test(r->ctx, target, i);
+	r->sc->val[k] = c;
+	r->sc->stamp[k] = r->sc->now;
+	return c;
+}
+
+static bool differ(rgb a, rgb b)
+{
+	return fabs(a.r - b.r) + fabs(a.g - b.g) + fabs(a.b - b.b) > 0.1;
+}
+
+/* Block [u1, u2] x [v1, v2] of the grid at subdivision `level`. */
+static rgb area_block(struct area_run *r, int u1, int v1, int u2, int v2, int level)
+{
+	rgb c00 = area_sample(r, u1, v1), c10 = area_sample(r, u2, v1);
+	rgb c01 = area_sample(r, u1, v2), c11 = area_sample(r, u2, v2);
+	bool leaf = u2 - u1 <= 1 && v2 - v1 <= 1;
+	if (!leaf && r->L->adaptive >= 0 && level >= r->L->adaptive) {
+		leaf = !(differ(c00, c10) || differ(c00, c01) || differ(c00, c11) || differ(c10, c01) ||
+		         differ(c10, c11) || differ(c01, c11));
+	}
+	if (leaf)
+		return rgb_scale(rgb_add(rgb_add(c00, c10), rgb_add(c01, c11)), 0.25);
+	int ua[2] = {u1, u1}, ub[2] = {u2, u2}, va[2] = {v1, v1}, vb[2] = {v2, v2};
+	int nu = 1, nv = 1;
+	if (u2 - u1 > 1) {
+		ub[0] = (u1 + u2) / 2;
+		ua[1] = (u1 + u2 + 1) / 2;
+		nu = 2;
+	}
+	if (v2 - v1 > 1) {
+		vb[0] = (v1 + v2) / 2;
+		va[1] = (v1 + v2 + 1) / 2;
+		nv = 2;
+	}
+	rgb sum = rgb_make(0, 0, 0);
+	for (int a = 0; a < nu; a++)
+		for (int b = 0; b < nv; b++)
+			sum = rgb_add(sum, area_block(r, ua[a], va[b], ub[a], vb[b], level + 1));
+	return rgb_scale(sum, 1.0 / (nu * nv));
+}
+
+/* A 32-bit hash of a point, for jitter. */
+static uint32_t point_hash(vec3 p, int which)
+{
+	uint64_t b[3];
+	memcpy(&b[0], &p.x, 8);
+	memcpy(&b[1], &p.y, 8);
+	memcpy(&b[2], &p.z, 8);
+	uint64_t h = hash_mix(b[0] ^ hash_mix(b[1] ^ hash_mix(b[2] + (uint64_t)which)));
+	return (uint32_t)(h >> 32);
+}
+
+rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
+               area_test_fn test, void *ctx)
+{
+	struct area_run r = {.L = L, .sc = sc, .test = test, .ctx = ctx, .a1 = L->axis1, .a2 = L->axis2};
+	r.base = light_target(L, pt, lr);
+	if (L->orient) {
+		/* Face the point: the axes across the way from the light to it. */
+		vec3 d = v3_norm(v3_sub(pt, L->pos));
+		vec3 up = fabs(fabs(d.z) - 1) < 0.01 ? v3(0, 1, 0) : v3(0, 0, 1);
+		vec3 a = v3_cross(d, up);
+		double al = v3_len(a);
+		if (al > 0) {
+			a = v3_scale(a, 1 / al);
+			vec3 b = v3_norm(v3_cross(d, a));
+			r.a1 = v3_scale(a, L->len1);
+			r.a2 = v3_scale(b, L->len2);
+		}
+	}
+	if (L->jitter) {
+		r.hx = point_hash(pt, 0);
+		r.hy = point_hash(pt, 1);
+	}
+	if (++sc->now == 0) {
+		/* The stamps wrapped around: forget them all. */
+		memset(sc->stamp, 0, sc->n * sizeof *sc->stamp);
+		sc->now = 1;
+	}
+	return area_block(&r, 0, 0, L->n1 - 1, L->n2 - 1, 0);
+}
