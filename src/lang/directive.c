@@ -663,9 +663,10 @@ static void dir_declare(struct parser *p, bool local)
 		f->pos++;
 		double x;
 		struct exprcache_ticket tk;
+		const struct token *site = &f->toks[f->pos - 2]; /* the identifier, before the '=' */
 		if (exprcache_try_float(p, &x, &tk)) {
 			/* Written in place, as exprcache_try does. */
-			struct value *slot = parse_assign_slot(p, id.str, local);
+			struct value *slot = parse_declare_slot(p, site, local);
 			val_clear(slot);
 			memset(slot, 0, sizeof *slot);
 			slot->kind = VAL_FLOAT;
