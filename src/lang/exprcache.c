@@ -62,7 +62,10 @@ struct xentry {
 	struct xinstr *code;
 	int ncode;
 	int depth;                   /* deepest stack */
-	bool scalar;                 /* only float operations: run_scalar can run it */
+	bool scalar;                 /* only float operations, but for a final vector
+	                              * literal (and colour keyword): run_scalar can run it */
+	uint8_t tail_vec;            /* that final <...>'s size, or 0 */
+	int body;                    /* scalar: the instructions before that literal */
 };
 
 struct exprcache {
@@ -445,8 +448,22 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 	e->depth = c.depth;
 	e->len = n;
 	e->rel_ok = rel;
-	e->scalar = true;
-	for (int i = 0; i < c.ncode; i++)
+	/* A vector literal at the very end (a colour keyword may follow)
+	 * takes the floats its components left on the stack: run_scalar
+	 * gathers them. Everything before must be float operations. */
+	int body = c.ncode;
+	if (body > 0 && c.code[body - 1].op == X_COLOR)
+		body--;
+	e->tail_vec = 0;
+	if (body > 0 && c.code[body - 1].op == X_VEC) {
+		e->tail_vec = (uint8_t)c.code[body - 1].i;
+		body--;
+	} else if (body != c.ncode) {
+		body = -1; /* a colour keyword on a float: run does it */
+	}
+	e->scalar = body >= 0;
+	e->body = body;
+	for (int i = 0; i < body; i++)
 		if (c.code[i].op == X_CONST || c.code[i].op == X_VEC || c.code[i].op == X_COLOR)
 			e->scalar = false;
 	e->state = XS_COMPILED;
@@ -544,12 +561,13 @@ static inline const struct value *var_value(struct parser *p, struct xinstr *in)
  * run's, without vectors, so each step is a few instructions. False, with
  * nothing changed, where a variable is not a plain float or run would
  * fail; the caller then tries run. */
-static bool run_scalar(struct parser *p, struct xentry *e, double *out)
+static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 {
 	double st[XSTACK];
 	struct { long i; uint32_t state; } undo[XRAND_UNDO];
 	int sp = 0, nundo = 0;
-	for (int pc = 0; pc < e->ncode; pc++) {
+	int body = e->body;
+	for (int pc = 0; pc < body; pc++) {
 		struct xinstr *in = &e->code[pc];
 		switch ((enum xop)in->op) {
 		case X_NUM: st[sp++] = in->k; break;
@@ -616,7 +634,20 @@ static bool run_scalar(struct parser *p, struct xentry *e, double *out)
 			goto fail;
 		}
 	}
-	*out = st[0];
+	/* The end: a float, or the final vector literal. */
+	if (!e->tail_vec) {
+		out->v[0] = st[0];
+		out->n = 1;
+		out->kind = VAL_FLOAT;
+		return true;
+	}
+	int n = e->tail_vec;
+	for (int k = 0; k < 5; k++)
+		out->v[k] = k < n ? st[k] : 0;
+	out->n = n;
+	out->kind = VAL_VECTOR;
+	if (body + 1 < e->ncode)
+		make_color((enum kw)e->code[body + 1].i, out);
 	return true;
 fail:
 	while (nundo > 0) {
@@ -797,19 +828,11 @@ bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket 
 	struct xentry *e = ready(p, tk, &i);
 	if (!e)
 		return false;
-	double d;
-	if (e->scalar && run_scalar(p, e, &d)) {
-		memset(out, 0, sizeof *out);
-		out->kind = VAL_FLOAT;
-		out->n = 1;
-		out->pos = e->key->pos;
-		out->v[0] = d;
-		skip(p, i, e);
-		return true;
-	}
 	struct xval x;
-	if (!run(p, e, false, &x))
+	if (!(e->scalar && run_scalar(p, e, &x)) && !run(p, e, false, &x))
 		return false;
+	for (int k = x.n; k < 5; k++)
+		x.v[k] = 0;
 	/* Fill *out in place: building the value on the stack and copying
 	 * it costs more than the whole program (store-forwarding stalls). */
 	memset(out, 0, sizeof *out);
@@ -827,12 +850,10 @@ bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket 
 	struct xentry *e = ready(p, tk, &i);
 	if (!e)
 		return false;
-	if (!(e->scalar && run_scalar(p, e, out))) {
-		struct xval x;
-		if (!run(p, e, true, &x))
-			return false;
-		*out = x.v[0];
-	}
+	struct xval x;
+	if (!(e->scalar && !e->tail_vec && run_scalar(p, e, &x)) && !run(p, e, true, &x))
+		return false;
+	*out = x.v[0];
 	skip(p, i, e);
 	return true;
 }
