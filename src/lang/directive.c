@@ -846,7 +846,10 @@ void parse_directive(struct parser *p, size_t hash)
 		parse_error_at(p, at, "directives nested inside each other too deeply (more than %d)", MAX_DIRECTIVE_DEPTH);
 	bool outer_defer = p->defer;
 	p->defer = true;
-	switch (kwt.kw) {
+	/* #declare first: loops are mostly assignments. */
+	if (kwt.kw == KW_DECLARE)
+		dir_declare(p, false);
+	else switch (kwt.kw) {
 	case KW_DECLARE: dir_declare(p, false); break;
 	case KW_LOCAL: dir_declare(p, true); break;
 	case KW_UNDEF: dir_undef(p); break;

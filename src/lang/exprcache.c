@@ -143,7 +143,7 @@ static bool same_token(const struct token *a, const struct token *b)
 
 /* The index in the top frame's tokens of the next token the parser will
  * read, or -1 if the lookahead did not come straight from there. */
-static long next_index(const struct parser *p)
+static inline long next_index(const struct parser *p)
 {
 	const struct frame *f = &p->frames[p->nframes - 1];
 	if (!p->have_cur)
@@ -782,7 +782,7 @@ fail:
 
 /* Where the compiled form may run: the parser at a token whose expression
  * is compiled for this context. Returns the entry, or NULL. */
-static struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
+static inline __attribute__((always_inline)) struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
 {
 	tk->key = NULL;
 	if (!p->xcache)

@@ -413,11 +413,9 @@ struct value *parse_assign_slot(struct parser *p, const char *name, bool local)
 	return v;
 }
 
-struct value *parse_declare_slot(struct parser *p, const struct token *site, bool local)
+struct value *parse_declare_slot_find(struct parser *p, const struct token *site, bool local)
 {
 	struct decl_cache *c = &p->declcache[((uintptr_t)site / sizeof *site) & (DECL_CACHE - 1)];
-	if (c->site == site && c->gen == p->bindgen && c->local == local)
-		return c->slot;
 	const char *name = site->str;
 	struct symtab *t;
 	struct value *v = local ? sym_get(t = parse_local_table(p), name) : find_binding(p, name, &t);

@@ -164,7 +164,14 @@ void parse_assign(struct parser *p, const char *name, bool local, struct value v
 /* parse_assign_slot for the declaration of the identifier token `site`
  * (in a token array): the slot found last time there is reused while no
  * binding has been added or removed and no frame entered or left. */
-struct value *parse_declare_slot(struct parser *p, const struct token *site, bool local);
+struct value *parse_declare_slot_find(struct parser *p, const struct token *site, bool local);
+static inline struct value *parse_declare_slot(struct parser *p, const struct token *site, bool local)
+{
+	const struct decl_cache *c = &p->declcache[((uintptr_t)site / sizeof *site) & (DECL_CACHE - 1)];
+	if (c->site == site && c->gen == p->bindgen && c->local == local)
+		return c->slot;
+	return parse_declare_slot_find(p, site, local);
+}
 /* The table holding the binding that NAME refers to for a by-reference
  * parameter (aliases followed); *name becomes the name there. */
 struct symtab *parse_alias_target(struct parser *p, const char **name);
