@@ -33,4 +33,22 @@ struct object *superellipsoid_new(double e, double n, struct srcpos pos);
 struct object *triangle_new(vec3 a, vec3 b, vec3 c, struct srcpos pos);
 struct object *smooth_triangle_new(vec3 a, vec3 na, vec3 b, vec3 nb, vec3 c, vec3 nc, struct srcpos pos);
 
+/* prism { spline sweep h1, h2, n, points }: the n 2-D points (x, z) cut
+ * into closed sub-prisms by the spline's rules (doc/objects.md). What was
+ * wrong with the points goes to *rep (may be NULL): the parser turns it
+ * into warnings, or an error when rep->open_at >= 0 (the prism is then
+ * empty). */
+enum prism_spline { PRISM_LINEAR_SPLINE, PRISM_QUADRATIC_SPLINE, PRISM_CUBIC_SPLINE, PRISM_BEZIER_SPLINE };
+struct prism_report {
+	bool closed_last; /* linear: the last sub-prism was not closed; it was closed */
+	int dropped;      /* bezier: sub-prisms that broke off or never closed, left out */
+	int open_at;      /* quadratic, cubic: the first point of a sub-prism that
+	                   * does not close, or -1 */
+};
+struct object *prism_new(enum prism_spline spline, bool conic, double h1, double h2, const double (*pts)[2], int n,
+                         struct srcpos pos, struct prism_report *rep);
+/* The prism's `open` (no caps) and `sturm` (the Sturm root solver). */
+void prism_set_open(struct object *o, bool open);
+void prism_set_sturm(struct object *o, bool sturm);
+
 #endif

@@ -665,9 +665,10 @@ static void dir_declare(struct parser *p, bool local)
 		f->pos++;
 		double x;
 		struct exprcache_ticket tk;
+		const struct token *site = &f->toks[f->pos - 2]; /* the identifier, before the '=' */
 		if (exprcache_try_float(p, &x, &tk)) {
 			/* Written in place, as exprcache_try does. */
-			struct value *slot = parse_assign_slot(p, id.str, local);
+			struct value *slot = parse_declare_slot(p, site, local);
 			val_clear(slot);
 			memset(slot, 0, sizeof *slot);
 			slot->kind = VAL_FLOAT;
@@ -857,7 +858,10 @@ void parse_directive(struct parser *p, size_t hash)
 		parse_error_at(p, at, "directives nested inside each other too deeply (more than %d)", MAX_DIRECTIVE_DEPTH);
 	bool outer_defer = p->defer;
 	p->defer = true;
-	switch (kwt.kw) {
+	/* #declare first: loops are mostly assignments. */
+	if (kwt.kw == KW_DECLARE)
+		dir_declare(p, false);
+	else switch (kwt.kw) {
 	case KW_DECLARE: dir_declare(p, false); break;
 	case KW_LOCAL: dir_declare(p, true); break;
 	case KW_UNDEF: dir_undef(p); break;

@@ -637,7 +637,13 @@ bool parse_starts_expression(struct parser *p)
 
 double parse_float(struct parser *p)
 {
-	struct value v = parse_expression(p);
+	/* A float expression's compiled form gives the number directly. */
+	double x;
+	struct exprcache_ticket tk;
+	if (exprcache_try_float(p, &x, &tk))
+		return x;
+	struct value v = parse_cond(p, false);
+	exprcache_record(p, &tk, &v);
 	if (v.kind != VAL_FLOAT)
 		parse_error_at(p, v.pos, "expected a float, found a %s", val_kind_name(v.kind));
 	return v.v[0];

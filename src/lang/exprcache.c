@@ -62,6 +62,10 @@ struct xentry {
 	struct xinstr *code;
 	int ncode;
 	int depth;                   /* deepest stack */
+	bool scalar;                 /* only float operations, but for a final vector
+	                              * literal (and colour keyword): run_scalar can run it */
+	uint8_t tail_vec;            /* that final <...>'s size, or 0 */
+	int body;                    /* scalar: the instructions before that literal */
 };
 
 struct exprcache {
@@ -139,7 +143,7 @@ static bool same_token(const struct token *a, const struct token *b)
 
 /* The index in the top frame's tokens of the next token the parser will
  * read, or -1 if the lookahead did not come straight from there. */
-static long next_index(const struct parser *p)
+static inline long next_index(const struct parser *p)
 {
 	const struct frame *f = &p->frames[p->nframes - 1];
 	if (!p->have_cur)
@@ -448,6 +452,24 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 	e->depth = c.depth;
 	e->len = n;
 	e->rel_ok = rel;
+	/* A vector literal at the very end (a colour keyword may follow)
+	 * takes the floats its components left on the stack: run_scalar
+	 * gathers them. Everything before must be float operations. */
+	int body = c.ncode;
+	if (body > 0 && c.code[body - 1].op == X_COLOR)
+		body--;
+	e->tail_vec = 0;
+	if (body > 0 && c.code[body - 1].op == X_VEC) {
+		e->tail_vec = (uint8_t)c.code[body - 1].i;
+		body--;
+	} else if (body != c.ncode) {
+		body = -1; /* a colour keyword on a float: run does it */
+	}
+	e->scalar = body >= 0;
+	e->body = body;
+	for (int i = 0; i < body; i++)
+		if (c.code[i].op == X_CONST || c.code[i].op == X_VEC || c.code[i].op == X_COLOR)
+			e->scalar = false;
 	e->state = XS_COMPILED;
 }
 
@@ -522,6 +544,123 @@ static void make_color(enum kw k, struct xval *x)
 
 enum { XRAND_UNDO = 32 };
 
+/* The value an X_VAR names. The binding found last time stands while no
+ * binding has been added or removed and no frame entered or left. A
+ * by-reference parameter is followed every time (the array element it
+ * names can move). */
+static inline const struct value *var_value(struct parser *p, struct xinstr *in)
+{
+	const struct value *v = in->bound;
+	if (v && in->gen == p->bindgen)
+		return v;
+	v = parse_binding(p, in->name);
+	in->bound = v && v->kind != VAL_ALIAS ? v : NULL;
+	in->gen = p->bindgen;
+	if (v && v->kind == VAL_ALIAS)
+		v = parse_lookup(p, in->name);
+	return v;
+}
+
+/* Run a scalar entry (only floats on the stack): the same operations as
+ * run's, without vectors, so each step is a few instructions. False, with
+ * nothing changed, where a variable is not a plain float or run would
+ * fail; the caller then tries run. */
+static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
+{
+	double st[XSTACK];
+	struct { long i; uint32_t state; } undo[XRAND_UNDO];
+	int sp = 0, nundo = 0;
+	int body = e->body;
+	for (int pc = 0; pc < body; pc++) {
+		struct xinstr *in = &e->code[pc];
+		switch ((enum xop)in->op) {
+		case X_NUM: st[sp++] = in->k; break;
+		case X_VAR: {
+			const struct value *v = var_value(p, in);
+			if (!v || v->kind != VAL_FLOAT || v->deprecated)
+				goto fail;
+			st[sp++] = v->v[0];
+			break;
+		}
+		case X_NEG: st[sp - 1] = -st[sp - 1]; break;
+		case X_NOT: st[sp - 1] = !parse_truthy(st[sp - 1]); break;
+		case X_ADD: sp--; st[sp - 1] += st[sp]; break;
+		case X_SUB: sp--; st[sp - 1] -= st[sp]; break;
+		case X_MUL: sp--; st[sp - 1] *= st[sp]; break;
+		case X_DIV:
+			sp--;
+			if (st[sp] == 0)
+				goto fail;
+			st[sp - 1] /= st[sp];
+			break;
+		case X_LT: case X_LE: case X_EQ: case X_GE: case X_GT: case X_NE: case X_AND: case X_OR:
+			sp--;
+			st[sp - 1] = compare((enum xop)in->op, st[sp - 1], st[sp]);
+			break;
+		case X_JZ:
+			if (!parse_truthy(st[--sp]))
+				pc = in->i - 1;
+			break;
+		case X_JMP: pc = in->i - 1; break;
+		case X_F1:
+			st[sp - 1] = in->fn->f1(st[sp - 1]);
+			if (!isfinite(st[sp - 1]))
+				goto fail;
+			break;
+		case X_F2:
+			sp--;
+			st[sp - 1] = in->fn->f2(st[sp - 1], st[sp]);
+			if (!isfinite(st[sp - 1]))
+				goto fail;
+			break;
+		case X_MIN: case X_MAX: {
+			int n = in->i;
+			sp -= n;
+			double acc = st[sp];
+			for (int i = 1; i < n; i++) {
+				double x = st[sp + i];
+				acc = in->op == X_MIN ? (x < acc ? x : acc) : (x > acc ? x : acc);
+			}
+			st[sp++] = acc;
+			break;
+		}
+		case X_RAND: {
+			long i = (long)st[sp - 1];
+			if (i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
+				goto fail;
+			undo[nundo].i = i;
+			undo[nundo++].state = p->rng[i];
+			p->rng[i] = p->rng[i] * 1812433253u + 12345u;
+			st[sp - 1] = p->rng[i] / 4294967295.0;
+			break;
+		}
+		default:
+			goto fail;
+		}
+	}
+	/* The end: a float, or the final vector literal. */
+	if (!e->tail_vec) {
+		out->v[0] = st[0];
+		out->n = 1;
+		out->kind = VAL_FLOAT;
+		return true;
+	}
+	int n = e->tail_vec;
+	for (int k = 0; k < 5; k++)
+		out->v[k] = k < n ? st[k] : 0;
+	out->n = n;
+	out->kind = VAL_VECTOR;
+	if (body + 1 < e->ncode)
+		make_color((enum kw)e->code[body + 1].i, out);
+	return true;
+fail:
+	while (nundo > 0) {
+		nundo--;
+		p->rng[undo[nundo].i] = undo[nundo].state;
+	}
+	return false;
+}
+
 /* Run e; false (and nothing changed) where the ordinary parser must. The
  * rand() streams it advanced are put back when it gives up. */
 static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval *out)
@@ -544,18 +683,7 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 			st[sp++].kind = VAL_VECTOR;
 			break;
 		case X_VAR: {
-			/* The binding found last time stands while no binding has
-			 * been added or removed and no frame entered or left. A
-			 * by-reference parameter is followed every time (the array
-			 * element it names can move). */
-			const struct value *v = in->bound;
-			if (!v || in->gen != p->bindgen) {
-				v = parse_binding(p, in->name);
-				in->bound = v && v->kind != VAL_ALIAS ? v : NULL;
-				in->gen = p->bindgen;
-				if (v && v->kind == VAL_ALIAS)
-					v = parse_lookup(p, in->name);
-			}
+			const struct value *v = var_value(p, in);
 			if (!v || !val_is_numeric(v) || v->deprecated)
 				goto fail;
 			memcpy(st[sp].v, v->v, sizeof v->v);
@@ -658,7 +786,7 @@ fail:
 
 /* Where the compiled form may run: the parser at a token whose expression
  * is compiled for this context. Returns the entry, or NULL. */
-static struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
+static inline __attribute__((always_inline)) struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
 {
 	tk->key = NULL;
 	if (!p->xcache)
@@ -702,9 +830,13 @@ bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket 
 {
 	long i;
 	struct xentry *e = ready(p, tk, &i);
-	struct xval x;
-	if (!e || !run(p, e, false, &x))
+	if (!e)
 		return false;
+	struct xval x;
+	if (!(e->scalar && run_scalar(p, e, &x)) && !run(p, e, false, &x))
+		return false;
+	for (int k = x.n; k < 5; k++)
+		x.v[k] = 0;
 	/* Fill *out in place: building the value on the stack and copying
 	 * it costs more than the whole program (store-forwarding stalls). */
 	memset(out, 0, sizeof *out);
@@ -720,8 +852,10 @@ bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket 
 {
 	long i;
 	struct xentry *e = ready(p, tk, &i);
+	if (!e)
+		return false;
 	struct xval x;
-	if (!e || !run(p, e, true, &x))
+	if (!(e->scalar && !e->tail_vec && run_scalar(p, e, &x)) && !run(p, e, true, &x))
 		return false;
 	*out = x.v[0];
 	skip(p, i, e);

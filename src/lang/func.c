@@ -105,17 +105,20 @@ static void c_call_user(struct fcomp *c, struct fn *callee, const char *name, st
 	c->depth -= n - 1;
 }
 
-/* F(x, y, z).component for a colour-valued function F (function {
- * pigment { } }): the pigment evaluated in place, one component kept. */
-static void c_call_color(struct fcomp *c, struct fn *callee, const char *name, struct srcpos at)
+/* F(args).component for a colour- or vector-valued function F (function
+ * { pigment { } }, { spline { } }, { transform { } }): F evaluated in
+ * place, one component kept (POV-Ray accepts such a call in a function
+ * body only with a component). */
+static void c_call_vector(struct fcomp *c, struct fn *callee, const char *name, struct srcpos at)
 {
 	struct parser *p = c->p;
 	int n = c_args(c);
-	if (n != 3)
-		parse_error_at(p, at, "function %s takes 3 arguments, not %d", name, n);
+	if (n != callee->nparams)
+		parse_error_at(p, at, "function %s takes %d argument%s, not %d", name, callee->nparams,
+		               callee->nparams == 1 ? "" : "s", n);
 	if (!parse_accept(p, TOK_DOT))
-		parse_error_at(p, at, "function %s gives a color: name a component (.red, .green, .blue, .filter, "
-		               ".transmit, .gray or .x, .y, .z, .t)", name);
+		parse_error_at(p, at, "function %s gives a %s: name a component (.red, .green, .blue, .filter, "
+		               ".transmit, .gray or .x, .y, .z, .t)", name, callee->pig ? "color" : "vector");
 	const struct token *t = parse_peek(p);
 	int i = -1;
 	if (t->kind == TOK_KEYWORD) {
@@ -130,7 +133,7 @@ static void c_call_color(struct fcomp *c, struct fn *callee, const char *name, s
 		}
 	}
 	if (i < 0)
-		parse_expected(p, "a color component after '.'");
+		parse_expected(p, "a component after '.'");
 	parse_advance(p);
 	struct fn *f = c->f;
 	f->callees = realloc(f->callees, (size_t)(f->ncallees + 1) * sizeof *f->callees);
@@ -138,11 +141,11 @@ static void c_call_color(struct fcomp *c, struct fn *callee, const char *name, s
 	f->callees[f->ncallees++] = fn_ref(callee);
 	struct fn_instr in;
 	memset(&in, 0, sizeof in);
-	in.op = FN_PIGMENT;
+	in.op = FN_VECTOR;
 	in.i = i;
-	in.pig = callee->pig;
+	in.fn = callee;
 	fn_emit(f, in);
-	c->depth -= 2;
+	c->depth -= n - 1;
 }
 
 static void c_primary(struct fcomp *c)
@@ -176,10 +179,10 @@ static void c_primary(struct fcomp *c)
 			parse_advance(p);
 			return;
 		}
-		if (v->kind == VAL_FUNCTION && v->fn->pig) {
+		if (v->kind == VAL_FUNCTION && fn_is_vector(v->fn)) {
 			struct fn *callee = v->fn;
 			parse_advance(p);
-			c_call_color(c, callee, name, at);
+			c_call_vector(c, callee, name, at);
 			return;
 		}
 		if (v->kind == VAL_FUNCTION) {
@@ -406,14 +409,65 @@ static struct fn *pattern_function(struct parser *p, int np)
 	return f;
 }
 
+/* function { spline { } }: S(t) is the spline at t. */
+static void spline_fn_eval(const void *data, const double *args, double out[5])
+{
+	struct value v = spline_eval(data, args[0], (struct srcpos){0});
+	for (int i = 0; i < 5; i++)
+		out[i] = i < v.n ? v.v[i] : 0;
+}
+
+static void spline_fn_free(void *data) { spline_unref(data); }
+
+/* function { transform { } }: T(x, y, z) is the point <x, y, z> transformed. */
+static void xform_fn_eval(const void *data, const double *args, double out[5])
+{
+	const struct xform *t = data;
+	vec3 q = mat_point(&t->fwd, (vec3){args[0], args[1], args[2]});
+	out[0] = q.x;
+	out[1] = q.y;
+	out[2] = q.z;
+	out[3] = out[4] = 0;
+}
+
+/* spline '{' .. '}' '}' | transform '{' .. '}' '}' after a function's '{'
+ * (the current token is the keyword): a vector-valued function of the
+ * spline's parameter, or of x, y, z. POV-Ray allows no parameter list
+ * here (params: whether one was given). */
+static struct fn *vector_function(struct parser *p, bool params)
+{
+	bool spl = parse_is_kw(p, KW_SPLINE);
+	if (params)
+		parse_error(p, "a %s function takes no parameter list", spl ? "spline" : "transform");
+	struct fn *f = fn_new(spl ? 1 : 3);
+	int slot = parse_own(p, f, free_fn_cb);
+	if (spl) {
+		struct spline *s = parse_spline(p);
+		f->vdata = s;
+		f->vfree = spline_fn_free;
+		f->veval = spline_fn_eval;
+		f->vdim = s->dim;
+	} else {
+		f->vdata = parse_transform_value(p);
+		f->vfree = free;
+		f->veval = xform_fn_eval;
+		f->vdim = 3;
+	}
+	parse_expect(p, TOK_RBRACE);
+	parse_release(p, slot);
+	return f;
+}
+
 /* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')'
- *   | pattern '{' .. '}' | pigment '{' .. '}' ) '}'
+ *   | pattern '{' .. '}' | pigment '{' .. '}' | spline '{' .. '}'
+ *   | transform '{' .. '}' ) '}'
  * The current token is 'function'. */
 struct fn *parse_function(struct parser *p)
 {
 	parse_advance(p);
 	const char *params[FN_MAX_PARAMS];
 	int np = 0;
+	bool has_params = parse_is(p, TOK_LPAREN);
 	if (parse_accept(p, TOK_LPAREN)) {
 		do {
 			const struct token *t = parse_peek(p);
@@ -454,6 +508,8 @@ struct fn *parse_function(struct parser *p)
 	}
 	if (parse_is_kw(p, KW_PATTERN) || parse_is_kw(p, KW_PIGMENT))
 		return pattern_function(p, np);
+	if (parse_is_kw(p, KW_SPLINE) || parse_is_kw(p, KW_TRANSFORM))
+		return vector_function(p, has_params);
 	struct fcomp c = {.p = p, .f = fn_new(np)};
 	for (int i = 0; i < np; i++)
 		c.params[i] = params[i];
@@ -486,6 +542,11 @@ struct value parse_call_function(struct parser *p, const struct fn *f, struct sr
 		double c[5];
 		fn_eval_color(f, args, c);
 		return val_vector(5, c, VAL_COLOR, at);
+	}
+	if (f->vdim > 0) {
+		double c[5];
+		fn_eval_vector(f, args, c);
+		return val_vector(f->vdim, c, f->vdim == 5 ? VAL_COLOR : VAL_VECTOR, at);
 	}
 	return val_float(fn_eval(f, args), at);
 }

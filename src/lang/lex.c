@@ -53,7 +53,7 @@ static void newline(struct lexer *lx, size_t at)
 
 /* Skip white space and comments. Block comments nest, as in POV-Ray.
  * Returns false after reporting an unterminated comment. */
-static bool skip_space(struct lexer *lx)
+static bool skip_space_slow(struct lexer *lx)
 {
 	while (lx->i < lx->n) {
 		char c = lx->s[lx->i];
@@ -94,34 +94,26 @@ static bool skip_space(struct lexer *lx)
 	return true;
 }
 
-/* The value of the number text s[0..len): exactly strtod's result. Plain
- * decimals of up to 15 significant digits and 22 decimals take a fast
- * path: the digits form an integer below 2^53 and 10^k is exact, so one
- * correctly rounded division gives the correctly rounded value. */
-static double number_value(const char *s, size_t len)
+/* skip_space_slow, with the common case (no space or comment here:
+ * mesh2 lists written without blanks) decided inline. */
+static inline bool skip_space(struct lexer *lx)
 {
-	uint64_t m = 0;
-	int digits = 0, frac = -1;
-	size_t i = 0;
-	for (; i < len; i++) {
-		char c = s[i];
-		if (c >= '0' && c <= '9') {
-			if (m || c != '0')
-				digits++;
-			m = m * 10 + (uint64_t)(c - '0');
-			if (frac >= 0)
-				frac++;
-		} else if (c == '.' && frac < 0) {
-			frac = 0;
-		} else {
-			break;
-		}
+	if (lx->i < lx->n) {
+		char c = lx->s[lx->i];
+		if ((unsigned char)c > ' ' && c != '/')
+			return true;
 	}
-	if (i == len && digits <= 15 && frac <= 22) {
-		static const double p10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
-		                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-		return frac > 0 ? (double)m / p10[frac] : (double)m;
-	}
+	return skip_space_slow(lx);
+}
+
+static inline bool is_digit(char c)
+{
+	return (unsigned char)(c - '0') < 10;
+}
+
+/* strtod of the number text s[0..len). */
+static double slow_number(const char *s, size_t len)
+{
 	char buf[128];
 	if (len >= sizeof buf) {
 		char *tmp = malloc(len + 1);
@@ -137,35 +129,57 @@ static double number_value(const char *s, size_t len)
 	return strtod(buf, NULL);
 }
 
-/* The end of the number starting at s[i] (digits, '.', digits, exponent). */
-static size_t number_end(const char *s, size_t i, size_t n)
+/* The end of the number starting at s[i] (digits, '.', digits, exponent)
+ * and, when out is not NULL, its value: exactly strtod's result, read in
+ * the same pass. Plain decimals of up to 15 digits and no exponent take a
+ * fast path: the digits form an integer below 2^53 and 10^k is exact, so
+ * one correctly rounded division gives the correctly rounded value. */
+/* Inlined everywhere, so that the lexer's check of a mesh2 run (out NULL)
+ * compiles to a scan that does no arithmetic. */
+static inline __attribute__((always_inline)) size_t scan_number(const char *s, size_t i, size_t n, double *out)
 {
-	while (i < n && isdigit((unsigned char)s[i]))
-		i++;
-	if (i < n && s[i] == '.') {
-		i++;
-		while (i < n && isdigit((unsigned char)s[i]))
-			i++;
+	const char *p = s + i, *e = s + n;
+	uint64_t m = 0;
+	while (p < e && is_digit(*p))
+		m = m * 10 + (uint64_t)(*p++ - '0');
+	size_t ndig = (size_t)(p - (s + i)), frac = 0;
+	if (p < e && *p == '.') {
+		const char *f = ++p;
+		while (p < e && is_digit(*p))
+			m = m * 10 + (uint64_t)(*p++ - '0');
+		frac = (size_t)(p - f);
+		ndig += frac;
 	}
-	if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-		size_t j = i + 1;
-		if (j < n && (s[j] == '+' || s[j] == '-'))
-			j++;
-		if (j < n && isdigit((unsigned char)s[j])) {
-			while (j < n && isdigit((unsigned char)s[j]))
-				j++;
-			i = j;
+	bool exponent = false;
+	if (p < e && (*p == 'e' || *p == 'E')) {
+		const char *q = p + 1;
+		if (q < e && (*q == '+' || *q == '-'))
+			q++;
+		if (q < e && is_digit(*q)) {
+			while (q < e && is_digit(*q))
+				q++;
+			p = q;
+			exponent = true;
 		}
 	}
-	return i;
+	if (out) {
+		static const double p10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11,
+		                             1e12, 1e13, 1e14, 1e15};
+		if (!exponent && ndig <= 15)
+			*out = frac > 0 ? (double)m / p10[frac] : (double)m;
+		else
+			*out = slow_number(s + i, (size_t)(p - (s + i)));
+	}
+	return (size_t)(p - s);
 }
 
 static bool lex_number(struct lexer *lx)
 {
 	size_t start = lx->i;
-	lx->i = number_end(lx->s, lx->i, lx->n);
+	double v;
+	lx->i = scan_number(lx->s, lx->i, lx->n, &v);
 	struct token *t = push(lx, TOK_NUMBER, here(lx, start));
-	t->num = number_value(lx->s + start, lx->i - start);
+	t->num = v;
 	return true;
 }
 
@@ -191,8 +205,10 @@ static void mark_restore(struct lexer *lx, struct mark m)
 }
 
 /* A signed number at lx->i (no space between sign and digits, as in the
- * vectors exporters write); false, reading nothing, if there is none. */
-static bool run_number(struct lexer *lx, double *out)
+ * vectors exporters write), its value into *out unless out is NULL (the
+ * lexer only checks the run; the parser reads the values); false, reading
+ * nothing, if there is none. */
+static inline __attribute__((always_inline)) bool run_number(struct lexer *lx, double *out)
 {
 	const char *s = lx->s;
 	size_t i = lx->i, n = lx->n;
@@ -201,26 +217,27 @@ static bool run_number(struct lexer *lx, double *out)
 		neg = s[i] == '-';
 		i++;
 	}
-	if (!(i < n && (isdigit((unsigned char)s[i]) || (s[i] == '.' && i + 1 < n && isdigit((unsigned char)s[i + 1])))))
+	if (!(i < n && (is_digit(s[i]) || (s[i] == '.' && i + 1 < n && is_digit(s[i + 1])))))
 		return false;
-	size_t end = number_end(s, i, n);
+	double v;
+	size_t end = scan_number(s, i, n, out ? &v : NULL);
 	/* A letter or '_' right after would make this something else. */
-	if (end < n && (isalpha((unsigned char)s[end]) || s[end] == '_'))
+	if (end < n && ((unsigned char)((s[end] | 32) - 'a') < 26 || s[end] == '_'))
 		return false;
-	double v = number_value(s + i, end - i);
-	*out = neg ? -v : v;
+	if (out)
+		*out = neg ? -v : v;
 	lx->i = end;
 	return true;
 }
 
-/* One vector `<n, n[, n]>` into v; returns its size (2 or 3) or 0, after
- * which the caller restores the position. */
-static int run_vector(struct lexer *lx, double v[3])
+/* One vector `<n, n[, n]>` into v (NULL: only checked); returns its size
+ * (2 or 3) or 0, after which the caller restores the position. */
+static inline __attribute__((always_inline)) int run_vector(struct lexer *lx, double v[3])
 {
 	lx->i++; /* '<' */
 	int k = 0;
 	for (;;) {
-		if (!skip_space(lx) || k == 3 || !run_number(lx, &v[k]))
+		if (!skip_space(lx) || k == 3 || !run_number(lx, v ? &v[k] : NULL))
 			return 0;
 		k++;
 		if (!skip_space(lx) || lx->i >= lx->n)
@@ -248,8 +265,7 @@ static bool lex_run(struct lexer *lx)
 	int dim = 0;
 	for (;;) {
 		struct mark start = mark_of(lx);
-		double v[3];
-		int k = lx->i < lx->n && lx->s[lx->i] == '<' ? run_vector(lx, v) : 0;
+		int k = lx->i < lx->n && lx->s[lx->i] == '<' ? run_vector(lx, NULL) : 0;
 		if (k == 0 || (dim && k != dim)) {
 			mark_restore(lx, start);
 			break;

@@ -599,6 +599,99 @@ static bool parse_mesh2_item(struct parser *p, struct mesh_builder *mb, int *las
 	return false;
 }
 
+/* ---- prism ---- */
+
+/* The fewest points each prism spline takes (enum prism_spline order). */
+static const int prism_min_points[] = {3, 5, 6, 0};
+static const char *const prism_spline_names[] = {"linear_spline", "quadratic_spline", "cubic_spline",
+                                                 "bezier_spline"};
+
+struct prism_points {
+	double (*pt)[2];
+	struct srcpos *pos;
+};
+
+static void free_prism_points_cb(void *v)
+{
+	struct prism_points *pp = v;
+	free(pp->pt);
+	free(pp->pos);
+	free(pp);
+}
+
+/* prism '{' { linear_spline | quadratic_spline | cubic_spline | bezier_spline
+ *             | linear_sweep | conic_sweep }
+ *   FLOAT ',' FLOAT ',' FLOAT ',' POINT { ',' POINT }
+ * (the commas are optional; POINT is a 2-D vector <x, z> or a float f,
+ * which is <f, f>). The current token is the first after '{'. */
+static struct object *parse_prism(struct parser *p, struct srcpos at)
+{
+	enum prism_spline spline = PRISM_LINEAR_SPLINE;
+	bool conic = false;
+	for (;;) {
+		if (parse_accept_kw(p, KW_LINEAR_SPLINE)) spline = PRISM_LINEAR_SPLINE;
+		else if (parse_accept_kw(p, KW_QUADRATIC_SPLINE)) spline = PRISM_QUADRATIC_SPLINE;
+		else if (parse_accept_kw(p, KW_CUBIC_SPLINE)) spline = PRISM_CUBIC_SPLINE;
+		else if (parse_accept_kw(p, KW_BEZIER_SPLINE)) spline = PRISM_BEZIER_SPLINE;
+		else if (parse_accept_kw(p, KW_LINEAR_SWEEP)) conic = false;
+		else if (parse_accept_kw(p, KW_CONIC_SWEEP)) conic = true;
+		else break;
+	}
+	double h1 = parse_float(p);
+	opt_comma(p);
+	double h2 = parse_float(p);
+	opt_comma(p);
+	struct srcpos nat = parse_peek(p)->pos;
+	double count = trunc(parse_float(p)); /* POV-Ray truncates a fraction */
+	int min = prism_min_points[spline];
+	if (!(count >= min))
+		parse_error_at(p, nat, "a %s prism needs at least %d points, found %g", prism_spline_names[spline], min,
+		               count);
+	if (count > 1e7)
+		parse_error_at(p, nat, "a prism has at most 10000000 points, found %g", count);
+	int n = (int)count;
+	if (spline == PRISM_BEZIER_SPLINE && n % 4 != 0)
+		parse_error_at(p, nat, "a bezier_spline prism needs four points per piece, found %d points", n);
+	struct prism_points *pp = calloc(1, sizeof *pp);
+	if (!pp) abort();
+	int slot = parse_own(p, pp, free_prism_points_cb);
+	pp->pt = malloc((size_t)n * sizeof *pp->pt);
+	pp->pos = malloc((size_t)n * sizeof *pp->pos);
+	if (!pp->pt || !pp->pos) abort();
+	for (int i = 0; i < n; i++) {
+		opt_comma(p);
+		struct srcpos vat = parse_peek(p)->pos;
+		struct value v = parse_expression(p);
+		if (v.kind == VAL_FLOAT)
+			v.v[1] = v.v[0];
+		else if (v.kind != VAL_VECTOR || v.n != 2)
+			parse_error_at(p, vat, "a prism point is a 2-D vector <x, z>, found %s",
+			               v.kind == VAL_VECTOR ? (v.n == 3 ? "a 3-D vector" : v.n == 4 ? "a 4-D vector"
+			                                                                             : "a 5-D vector")
+			                                    : val_kind_name(v.kind));
+		pp->pt[i][0] = v.v[0];
+		pp->pt[i][1] = v.v[1];
+		pp->pos[i] = vat;
+	}
+	struct prism_report rep;
+	struct object *o = prism_new(spline, conic, h1, h2, (const double (*)[2])pp->pt, n, at, &rep);
+	if (rep.open_at >= 0) {
+		object_free(o);
+		parse_error_at(p, pp->pos[rep.open_at],
+		               "this %s sub-prism does not close: its start (the point after this one) must come "
+		               "again%s",
+		               prism_spline_names[spline], spline == PRISM_CUBIC_SPLINE ? ", then an end control point" : "");
+	}
+	if (rep.closed_last)
+		parse_warning_at(p, at, "the last sub-prism of this linear_spline prism is not closed: closing it");
+	if (rep.dropped)
+		parse_warning_at(p, at, "%d sub-prism%s of this bezier_spline prism %s not closed: ignoring %s", rep.dropped,
+		                 rep.dropped == 1 ? "" : "s", rep.dropped == 1 ? "is" : "are", rep.dropped == 1 ? "it" : "them");
+	parse_release(p, slot);
+	free_prism_points_cb(pp);
+	return o;
+}
+
 /* ---- objects ---- */
 
 bool parse_is_object_start(enum kw k)
@@ -606,7 +699,7 @@ bool parse_is_object_start(enum kw k)
 	switch (k) {
 	case KW_SPHERE: case KW_PLANE: case KW_BOX: case KW_CYLINDER: case KW_CONE: case KW_DISC:
 	case KW_TORUS: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE: case KW_QUADRIC: case KW_CUBIC:
-	case KW_QUARTIC: case KW_POLY: case KW_SUPERELLIPSOID: case KW_MESH: case KW_MESH2:
+	case KW_QUARTIC: case KW_POLY: case KW_SUPERELLIPSOID: case KW_MESH: case KW_MESH2: case KW_PRISM:
 	case KW_UNION: case KW_INTERSECTION: case KW_DIFFERENCE: case KW_MERGE: case KW_OBJECT:
 	case KW_LIGHT_GROUP:
 		return true;
@@ -772,15 +865,23 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	case KW_STURM: {
 		bool is_open = tk->kw == KW_OPEN;
 		enum kw k = s->args ? s->args->kw : KW_OBJECT;
-		bool fits = is_open ? (k == KW_CYLINDER || k == KW_CONE)
-		                    : (k == KW_TORUS || k == KW_CUBIC || k == KW_QUARTIC || k == KW_POLY);
+		bool fits = is_open ? (k == KW_CYLINDER || k == KW_CONE || k == KW_PRISM)
+		                    : (k == KW_TORUS || k == KW_CUBIC || k == KW_QUARTIC || k == KW_POLY || k == KW_PRISM);
 		if (!fits)
 			parse_error_at(p, at, "'%s' applies to %s only", is_open ? "open" : "sturm",
-			               is_open ? "cylinder and cone" : "torus, cubic, quartic and poly");
+			               is_open ? "cylinder, cone and prism" : "torus, cubic, quartic, poly and prism");
 		parse_advance(p);
 		bool on = true;
 		if (parse_starts_expression(p))
 			on = parse_float(p) != 0;
+		if (k == KW_PRISM) {
+			/* The prism's points are not kept: set it in place. */
+			if (is_open)
+				prism_set_open(o, on);
+			else
+				prism_set_sturm(o, on);
+			return true;
+		}
 		if (is_open)
 			s->args->open = on;
 		else
@@ -841,6 +942,12 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	case KW_MERGE: s.o = csg_new(CSG_MERGE, at); break;
 	case KW_INTERSECTION: s.o = csg_new(CSG_INTERSECTION, at); break;
 	case KW_DIFFERENCE: s.o = csg_new(CSG_DIFFERENCE, at); break;
+	case KW_PRISM:
+		memset(&args, 0, sizeof args);
+		args.kw = k;
+		s.args = &args;
+		s.o = parse_prism(p, at);
+		break;
 	case KW_MESH:
 	case KW_MESH2:
 		s.mb = mesh_builder_new(k == KW_MESH ? MESH_KIND_MESH : MESH_KIND_MESH2);

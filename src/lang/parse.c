@@ -173,7 +173,7 @@ void parse_push_file(struct parser *p, uint32_t file, struct srcpos from)
 	f->end = sf->ntoks - 1; /* the TOK_EOF */
 }
 
-struct token parse_raw(struct parser *p)
+struct token parse_raw_next(struct parser *p)
 {
 	for (;;) {
 		struct frame *f = &p->frames[p->nframes - 1];
@@ -286,8 +286,24 @@ bool parse_is_kw(struct parser *p, enum kw k)
 	return t->kind == TOK_KEYWORD && t->kw == k;
 }
 
+/* The common case of parse_accept and parse_expect: no lookahead held and
+ * the next token of the frame is of kind k, which is neither '#' nor an
+ * identifier (those may run a directive or a macro): take it in place. */
+static inline bool take_raw(struct parser *p, enum tok_kind k)
+{
+	if (p->have_cur || k == TOK_HASH || k == TOK_IDENT)
+		return false;
+	struct frame *f = &p->frames[p->nframes - 1];
+	if (f->pos >= f->end || f->toks[f->pos].kind != k)
+		return false;
+	p->prev = f->toks[f->pos++];
+	return true;
+}
+
 bool parse_accept(struct parser *p, enum tok_kind k)
 {
+	if (take_raw(p, k))
+		return true;
 	if (parse_peek(p)->kind != k)
 		return false;
 	parse_advance(p);
@@ -304,6 +320,8 @@ bool parse_accept_kw(struct parser *p, enum kw k)
 
 void parse_expect(struct parser *p, enum tok_kind k)
 {
+	if (take_raw(p, k))
+		return;
 	if (parse_peek(p)->kind != k) {
 		char what[32];
 		snprintf(what, sizeof what, "'%s'", lex_kind_name(k));
@@ -392,6 +410,27 @@ struct value *parse_assign_slot(struct parser *p, const char *name, bool local)
 		sym_set(t, name, (struct value){.kind = VAL_NONE});
 		return sym_get(t, name);
 	}
+	return v;
+}
+
+struct value *parse_declare_slot_find(struct parser *p, const struct token *site, bool local)
+{
+	struct decl_cache *c = &p->declcache[((uintptr_t)site / sizeof *site) & (DECL_CACHE - 1)];
+	const char *name = site->str;
+	struct symtab *t;
+	struct value *v = local ? sym_get(t = parse_local_table(p), name) : find_binding(p, name, &t);
+	if (v && v->kind == VAL_ALIAS)
+		return parse_assign_slot(p, name, local); /* followed every time */
+	if (!v) {
+		if (!local)
+			t = p->globals;
+		sym_set(t, name, (struct value){.kind = VAL_NONE});
+		v = sym_get(t, name);
+	}
+	c->site = site;
+	c->slot = v;
+	c->gen = p->bindgen;
+	c->local = local;
 	return v;
 }
 

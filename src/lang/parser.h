@@ -50,6 +50,8 @@ struct owned {
 	void (*free)(void *);
 };
 
+enum { DECL_CACHE = 64 };
+
 struct parser {
 	struct srcmgr *sm;
 	struct diag *d;
@@ -96,6 +98,12 @@ struct parser {
 	unsigned long writes;        /* files opened by #fopen for writing or appending:
 	                              * an #include of a file loaded before the last
 	                              * such #fopen reads it again */
+	struct decl_cache {          /* the slot each recent #declare/#local wrote */
+		const struct token *site;    /* the declared identifier's token */
+		struct value *slot;
+		unsigned long gen;           /* bindgen when slot was found */
+		bool local;
+	} declcache[DECL_CACHE];
 };
 
 /* Errors: report at pos (or at the current token) and unwind. */
@@ -156,6 +164,17 @@ struct value *parse_binding(struct parser *p, const char *name);
 struct value *parse_assign_slot(struct parser *p, const char *name, bool local);
 /* Assign v (taking it) as #declare / #local does. */
 void parse_assign(struct parser *p, const char *name, bool local, struct value v);
+/* parse_assign_slot for the declaration of the identifier token `site`
+ * (in a token array): the slot found last time there is reused while no
+ * binding has been added or removed and no frame entered or left. */
+struct value *parse_declare_slot_find(struct parser *p, const struct token *site, bool local);
+static inline struct value *parse_declare_slot(struct parser *p, const struct token *site, bool local)
+{
+	const struct decl_cache *c = &p->declcache[((uintptr_t)site / sizeof *site) & (DECL_CACHE - 1)];
+	if (c->site == site && c->gen == p->bindgen && c->local == local)
+		return c->slot;
+	return parse_declare_slot_find(p, site, local);
+}
 /* The table holding the binding that NAME refers to for a by-reference
  * parameter (aliases followed); *name becomes the name there. */
 struct symtab *parse_alias_target(struct parser *p, const char **name);
@@ -171,8 +190,17 @@ struct symtab *parse_local_table(struct parser *p);
 void parse_leave_finished(struct parser *p, int home);
 
 /* Raw token access for directives: the next token of the innermost frame,
- * without running directives or macros. Only when no lookahead is held. */
-struct token parse_raw(struct parser *p);
+ * without running directives or macros. Only when no lookahead is held.
+ * The common case (the frame has tokens left) is inline; parse_raw_next
+ * leaves finished frames. */
+struct token parse_raw_next(struct parser *p);
+static inline struct token parse_raw(struct parser *p)
+{
+	struct frame *f = &p->frames[p->nframes - 1];
+	if (f->pos < f->end)
+		return f->toks[f->pos++];
+	return parse_raw_next(p);
+}
 /* Enter a macro body (called by the token stream on a macro's name). */
 void parse_call_macro(struct parser *p, const struct token *name, struct macro *m);
 /* Enter a file's tokens; `from` is the #include's position. */

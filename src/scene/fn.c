@@ -35,6 +35,8 @@ void fn_unref(struct fn *f)
 		free(f->pat);
 	}
 	pigment_unref(f->pig);
+	if (f->vfree)
+		f->vfree(f->vdata);
 	free(f);
 }
 
@@ -51,6 +53,11 @@ int fn_emit(struct fn *f, struct fn_instr in)
 
 double fn_eval(const struct fn *f, const double *args)
 {
+	if (f->vdim > 0) {
+		double v[5];
+		f->veval(f->vdata, args, v);
+		return v[0];
+	}
 	double st[FN_MAX_STACK];
 	int sp = 0;
 	const struct fn_instr *code = f->code;
@@ -147,6 +154,14 @@ double fn_eval(const struct fn *f, const double *args)
 			st[sp++] = comp[in->i];
 			break;
 		}
+		case FN_VECTOR: {
+			int n = in->fn->nparams;
+			sp -= n;
+			double c[5];
+			fn_eval_vector(in->fn, &st[sp], c);
+			st[sp++] = in->i == 5 ? 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2] : c[in->i];
+			break;
+		}
 		}
 	}
 	return sp > 0 ? st[sp - 1] : 0;
@@ -161,4 +176,21 @@ void fn_eval_color(const struct fn *f, const double *args, double out[5])
 	out[2] = c.b;
 	out[3] = c.f;
 	out[4] = c.t;
+}
+
+void fn_eval_vector(const struct fn *f, const double *args, double out[5])
+{
+	if (f->pig) {
+		fn_eval_color(f, args, out);
+		return;
+	}
+	if (f->vdim > 0) {
+		f->veval(f->vdata, args, out);
+		for (int i = f->vdim; i < 5; i++)
+			out[i] = 0;
+		return;
+	}
+	out[0] = fn_eval(f, args);
+	for (int i = 1; i < 5; i++)
+		out[i] = 0;
 }

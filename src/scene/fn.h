@@ -5,6 +5,7 @@
 #ifndef LUCENT_FN_H
 #define LUCENT_FN_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 enum fn_op {
@@ -25,6 +26,8 @@ enum fn_op {
 	FN_JMP,      /* jump to instruction i */
 	FN_PATTERN,  /* pop z, y, x; push the value of pattern pat at (x, y, z) */
 	FN_PIGMENT,  /* pop z, y, x; push component i (0..4 red..transmit, 5 gray) of pigment pig there */
+	FN_VECTOR,   /* pop fn's nparams values; push component i (0..4, 5 gray) of the
+	              * vector- or colour-valued function fn at them */
 };
 
 struct fn;
@@ -57,6 +60,13 @@ struct fn {
 	struct pattern *pat;         /* function { pattern { } }: owned */
 	struct pigment *pig;         /* function { pigment { } }: one reference; the
 	                              * function is colour-valued (fn_eval_color) */
+	/* function { spline { } } and function { transform { } }: a
+	 * vector-valued function whose evaluator the front end supplies.
+	 * vdata is owned, released by vfree. */
+	int vdim;                    /* components of the result (2..5); 0: not vector-valued */
+	void (*veval)(const void *vdata, const double *args, double out[5]);
+	void (*vfree)(void *vdata);
+	void *vdata;
 };
 
 struct fn *fn_new(int nparams);
@@ -64,12 +74,21 @@ struct fn *fn_ref(struct fn *f);
 void fn_unref(struct fn *f);
 /* Append an instruction; returns its index. */
 int fn_emit(struct fn *f, struct fn_instr in);
-/* Evaluate f with args[0..nparams). A colour-valued function (pig set)
- * gives its red component. */
+/* Evaluate f with args[0..nparams). A colour- or vector-valued function
+ * gives its first component. */
 double fn_eval(const struct fn *f, const double *args);
 /* A colour-valued function's colour at args (x, y, z): red, green, blue,
  * filter, transmit. */
 void fn_eval_color(const struct fn *f, const double *args, double out[5]);
+/* The components of f at args: a colour-valued function's colour, a
+ * vector-valued function's vector (zeros past f->vdim), or a float
+ * function's value in out[0] and zeros. */
+void fn_eval_vector(const struct fn *f, const double *args, double out[5]);
+/* A function with a value of several components (a colour or a vector)? */
+static inline bool fn_is_vector(const struct fn *f)
+{
+	return f->pig || f->vdim > 0;
+}
 /* An internal function of POV-Ray's numbering (function { internal(N) }):
  * its value at args (nargs values), or NaN if N is unknown. */
 double fn_internal(int n, const double *args, int nargs);

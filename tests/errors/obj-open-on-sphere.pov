@@ -1,2 +1,2 @@
-// expect: 2:15: 'open' applies to cylinder and cone only
+// expect: 2:15: 'open' applies to cylinder, cone and prism only
 sphere { 0, 1 open }

@@ -1,2 +1,2 @@
-// expect: 2:13: 'sturm' applies to torus, cubic, quartic and poly only
+// expect: 2:13: 'sturm' applies to torus, cubic, quartic, poly and prism only
 box { -1, 1 sturm }
