@@ -168,6 +168,15 @@ static void medium_cross(const struct medium *m, const struct interior *in, stru
 		out->in[out->n++] = in;
 }
 
+/* The colour of pigment pg at s. Below quality 6 a patterned pigment with
+ * a quick_color shows that colour, as in POV-Ray. */
+static struct rgbft pigment_at(const struct prepared *p, const struct pigment *pg, const struct surface *s)
+{
+	if (p->quality < 6 && pg && pg->kind != PIGMENT_SOLID && pg->quick)
+		return pg->color;
+	return pigment_eval(pg, ctx_for(s, &pg->pat));
+}
+
 /* A layer of a stack that is itself patterned (POV-Ray forbids this in the
  * language; a texture built otherwise gets the entry the pattern favours). */
 static const struct texture *plain_of(const struct texture *t, const struct surface *s)
@@ -411,7 +420,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		struct layer *y = &L[nl++];
 		y->t = pl;
 		y->fin = &pl->finish;
-		struct rgbft c = pigment_eval(pl->pigment, ctx_for(s, &pl->pigment->pat));
+		struct rgbft c = pigment_at(p, pl->pigment, s);
 		y->pig = rgb_of(c);
 		y->opacity = 1 - c.f - c.t;
 		y->n = s->n;
@@ -429,6 +438,10 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		if (rgb_max(filt) <= 0 || pl != l)
 			break;
 	}
+	/* Quality 0 and 1: full ambient light only (POV-Ray shows the
+	 * pigment's colour as it is). */
+	if (p->quality < 2)
+		return nl ? L[0].pig : rgb_make(0, 0, 0);
 
 	rgb col = rgb_make(0, 0, 0);
 	for (int i = 0; i < nl; i++) {
