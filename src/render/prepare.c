@@ -290,8 +290,10 @@ void prepare_quality(struct prepared *p, int q)
 	p->quality = q;
 	if (q < 8)
 		p->features &= ~(unsigned)(FEAT_REFLECTION | FEAT_FRESNEL | FEAT_NORMALS);
+	/* Below 6 light still filters through transparent objects on its way
+	 * to a surface (POV-Ray's shadows do), but no ray is transmitted. */
 	if (q < 6)
-		p->features &= ~(unsigned)(FEAT_TRANSPARENCY | FEAT_REFRACTION | FEAT_FADE | FEAT_DISPERSION | FEAT_CAUSTICS);
+		p->features &= ~(unsigned)(FEAT_REFRACTION | FEAT_DISPERSION);
 	if (q < 5)
 		p->features &= ~(unsigned)FEAT_AREA_LIGHTS;
 	if (q < 4)

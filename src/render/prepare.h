@@ -64,7 +64,8 @@ struct prepared {
 struct prepared *prepare_scene(struct scene *s);
 void prepared_free(struct prepared *p);
 /* Leave out what POV-Ray's quality level q (+Q) leaves out: below 8
- * reflection and normal perturbation, below 6 transmitted light (and
+ * reflection and normal perturbation, below 6 transmitted rays (shadows
+ * still filter through transparent objects; and
  * patterned pigments with a quick_color show that colour), below 5 area
  * lights, below 4 shadows, below 2 all lighting (each surface shows its
  * pigment's colour). Masks p->features. */

@@ -514,7 +514,8 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				rc = rgb_make(pow(fmax(rc.r, 0), 1 / e), pow(fmax(rc.g, 0), 1 / e), pow(fmax(rc.b, 0), 1 / e));
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
-		if ((feat & FEAT_TRANSPARENCY) && weight * rgb_max(filt) > bail)
+		/* Quality below 6 transmits no ray (prepare_quality). */
+		if ((feat & FEAT_TRANSPARENCY) && p->quality >= 6 && weight * rgb_max(filt) > bail)
 			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
 	}
 	return col;
