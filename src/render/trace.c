@@ -391,7 +391,10 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 		return trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any);
 	}
 	struct ray r = {v3_madd(s->pt, s->n, -s->eps), d};
-	return trace_ray_in(tr, &r, s->depth + 1, RAY_REFRACTED, weight, after, &any);
+	/* A ray that passes straight through (no change of ior) stays on its
+	 * trace level, as in POV-Ray 3.7 (measured: eight clear faces in a row
+	 * all show at max_trace_level 2; with ior 1.5 each face takes one). */
+	return trace_ray_in(tr, &r, n1 == n2 ? s->depth : s->depth + 1, RAY_REFRACTED, weight, after, &any);
 }
 
 /* The colour of the plain-texture stack t (t, t->next, ...) at s: each
@@ -504,7 +507,9 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		for (int i = 0; i < nl; i++) {
 			const struct layer *y = &L[i];
 			double w = weight * rgb_max(y->refl);
-			if (w <= bail)
+			/* POV-Ray traces a ray whose weight equals adc_bailout
+			 * (measured: reflection 0.2 shows at adc_bailout 0.2). */
+			if (w < bail || w <= 0)
 				continue;
 			struct ray rr = {v3_madd(s->pt, s->n, s->eps), v3_reflect(s->dir, y->n)};
 			bool any;
@@ -515,7 +520,8 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
 		/* Quality below 6 transmits no ray (prepare_quality). */
-		if ((feat & FEAT_TRANSPARENCY) && p->quality >= 6 && weight * rgb_max(filt) > bail)
+		if ((feat & FEAT_TRANSPARENCY) && p->quality >= 6 && weight * rgb_max(filt) >= bail &&
+		    rgb_max(filt) > 0)
 			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
 	}
 	return col;
