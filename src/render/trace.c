@@ -441,10 +441,16 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		if (rgb_max(filt) <= 0 || pl != l)
 			break;
 	}
-	/* Quality 0 and 1: full ambient light only (POV-Ray shows the
-	 * pigment's colour as it is). */
-	if (p->quality < 2)
-		return nl ? L[0].pig : rgb_make(0, 0, 0);
+	/* Quality 0 and 1: full ambient light only. POV-Ray shows the
+	 * pigments' colours as they are: each layer through the transparency
+	 * of those above it, the last one whole (measured: a clear glass
+	 * shows its colour, a clear top layer the one below). */
+	if (p->quality < 2) {
+		rgb c = rgb_make(0, 0, 0);
+		for (int i = 0; i < nl; i++)
+			c = rgb_add(c, rgb_mul(L[i].above, rgb_scale(L[i].pig, i == nl - 1 ? 1 : L[i].opacity)));
+		return c;
+	}
 
 	rgb col = rgb_make(0, 0, 0);
 	for (int i = 0; i < nl; i++) {
