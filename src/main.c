@@ -70,8 +70,10 @@ static char *default_output(const char *input, enum img_format f)
 	return out;
 }
 
-static void print_stats(FILE *out, const struct stats *st, unsigned features, double tparse,
-                        double tprep, double trender, int w, int h)
+/* features: what the render simulated; possible: what the scene could
+ * show at full quality (the rest of it was left out by +Q). */
+static void print_stats(FILE *out, const struct stats *st, unsigned features, unsigned possible, int quality,
+                        double tparse, double tprep, double trender, int w, int h)
 {
 	fprintf(out, "Render statistics\n");
 	fprintf(out, "  image       %d x %d\n", w, h);
@@ -79,7 +81,10 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, do
 	fprintf(out, "  prepare     %.3f s\n", tprep);
 	fprintf(out, "  render      %.3f s\n", trender);
 	fprintf(out, "  pixels      %llu\n", (unsigned long long)st->pixels);
-	fprintf(out, "  samples     %llu\n", (unsigned long long)st->samples);
+	fprintf(out, "  samples     %llu (%.2f per pixel)\n", (unsigned long long)st->samples,
+	        st->pixels ? (double)st->samples / (double)st->pixels : 0.0);
+	if (features & FEAT_ANTIALIAS)
+		fprintf(out, "  supersampled pixels %llu\n", (unsigned long long)st->aa_pixels);
 	unsigned long long total = 0;
 	for (int k = 0; k < RAY__COUNT; k++)
 		total += st->rays[k];
@@ -96,10 +101,20 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, do
 			any = true;
 		}
 	fputs(any ? "\n" : " (none)\n", out);
+	if (possible & ~features & ~(unsigned)FEAT_ANTIALIAS) {
+		fprintf(out, "  left out  ");
+		any = false;
+		for (int i = 0; i < FEAT__COUNT; i++)
+			if ((possible & ~features) & (1u << i) && (1u << i) != FEAT_ANTIALIAS) {
+				fprintf(out, "%s%s", any ? ", " : " ", feature_name((enum feature)(1u << i)));
+				any = true;
+			}
+		fprintf(out, " (quality +Q%d)\n", quality);
+	}
 	fputs("  skipped   ", out);
 	any = false;
 	for (int i = 0; i < FEAT__COUNT; i++)
-		if (!(features & (1u << i))) {
+		if (!(features & (1u << i)) && !(possible & (1u << i)) && (1u << i) != FEAT_ANTIALIAS) {
 			fprintf(out, "%s%s", any ? ", " : " ", feature_name((enum feature)(1u << i)));
 			any = true;
 		}
@@ -209,8 +224,12 @@ int main(int argc, char **argv)
 	double t1 = now();
 	prep = prepare_scene(scene);
 	prep->signature = opt.signature;
+	unsigned possible = prep->features;
+	prepare_quality(prep, opt.quality > 9 ? 9 : opt.quality);
+	if (opt.antialias)
+		prep->features |= FEAT_ANTIALIAS;
 	if (opt.signature)
-		prep->features = 0; /* flat colours: no effect is simulated */
+		prep->features = possible = 0; /* flat colours: no effect is simulated */
 	double t2 = now();
 
 	int row0 = opt.start_row >= 0 ? options_bound(opt.start_row, opt.height, false) : 0;
@@ -233,6 +252,14 @@ int main(int argc, char **argv)
 		.threads = opt.threads > 0 ? opt.threads : core_count(),
 		.progress = !opt.quiet && isatty(STDERR_FILENO),
 		.stop = &interrupted,
+		.aa_method = opt.antialias && !opt.signature ? opt.aa_method : 0,
+		.aa_threshold = opt.aa_threshold,
+		.aa_depth = opt.aa_depth,
+		.jitter = opt.jitter ? opt.jitter_amount : 0,
+		/* Colours are compared in linear light raised to 1 / +AG (measured:
+		 * doc/rendering.md); a scene without gamma handling works in
+		 * linear light. */
+		.aa_exponent = (gamma > 0 ? gamma : 1.0) / opt.aa_gamma,
 	};
 	if (opt.verbose && !opt.quiet)
 		fprintf(stderr, "lucent: %s: %zu objects (%zu unbounded), %zu lights, %zu BVH nodes; "
@@ -275,7 +302,7 @@ int main(int argc, char **argv)
 		}
 	}
 	if (!opt.quiet) {
-		print_stats(stderr, &st, features, t1 - t0, t2 - t1, t3 - t2, opt.width, opt.height);
+		print_stats(stderr, &st, features, possible, opt.quality, t1 - t0, t2 - t1, t3 - t2, opt.width, opt.height);
 		if (opt.output_to_file)
 			fprintf(stderr, "wrote %s\n", opt.output);
 	}

@@ -17,6 +17,14 @@ void options_init(struct options *o)
 	o->format = IMG_PNG;
 	o->bits = 8;
 	o->start_row = o->end_row = o->start_col = o->end_col = -1;
+	/* POV-Ray 3.7's defaults (its option listing with +A alone). */
+	o->aa_threshold = 0.3;
+	o->aa_method = 1;
+	o->aa_depth = 3;
+	o->jitter = true;
+	o->jitter_amount = 1.0;
+	o->aa_gamma = 2.5;
+	o->quality = 9;
 }
 
 void options_free(struct options *o)
@@ -52,6 +60,13 @@ void options_usage(FILE *out)
 "  +WTn           render threads (default: one per core)\n"
 "  +SRn +ERn      start/end row; +SCn +ECn start/end column (a pixel\n"
 "                 number, or a fraction of the size if between 0 and 1)\n"
+"  +A[t], -A      antialiasing on (colour difference t, default 0.3) or off\n"
+"  +AMn           antialiasing method: 1 adaptive, 2 recursive adaptive\n"
+"  +Rn            antialiasing depth 1 to 9 (method 1: n x n samples;\n"
+"                 method 2: n-1 subdivisions); default 3\n"
+"  +J[a], -J      jitter the samples (amount a from 0 to 1, default 1)\n"
+"  +AGg           gamma of the antialiasing colour comparison (default 2.5)\n"
+"  +Qn            quality 0 to 11 (default 9): lower levels leave out effects\n"
 "  +V, -V         verbose output on or off\n"
 "  Declare=N=V    declare identifier N as the float V\n"
 "  +GDfile        write #debug text to file instead of the console\n"
@@ -184,10 +199,8 @@ static int set_format(struct options *o, const char *arg, FILE *err, const struc
 /* POV-Ray switches lucent knows of but does not implement yet, with what
  * they do, so the warning can say it. Longest prefixes first. */
 static const struct { const char *sw; const char *what; } unimplemented[] = {
-	{"AM", "antialiasing method"}, {"AG", "antialiasing gamma"}, {"A", "antialiasing"},
 	{"RTR", "real-time raytracing"}, {"RVP", "real-time viewport"}, {"RS", "radiosity"},
 	{"BM", "bounding method"}, {"BS", "block size"},
-	{"J", "antialias jitter"}, {"R", "antialias depth"}, {"Q", "quality level"},
 	{"KFI", "initial animation frame"}, {"KFF", "final animation frame"}, {"KI", "initial clock"},
 	{"KF", "final clock"}, {"KC", "cyclic animation"},
 	{"MB", "bounding threshold"}, {"MV", "language version"}, {"UR", "remove bounds"},
@@ -252,10 +265,40 @@ static int switch_arg(struct options *o, char sign, const char *s, FILE *err, co
 			report(err, at, "warning", "switch '%s' (preview display) is not implemented; rendering to the file only", full);
 		return 0;
 	}
+	/* Antialiasing and quality. A value after -A or -J is kept for a later
+	 * +A or +J, as in POV-Ray. */
+	if (starts_ci(s, "AM")) {
+		NUM(2, o->aa_method = (int)v, v == 1 || v == 2, "the sampling method is 1 or 2");
+		return 0;
+	}
+	if (starts_ci(s, "AG")) {
+		NUM(2, o->aa_gamma = v, v > 0 && v <= 10, "the antialiasing gamma must be above 0 and at most 10");
+		return 0;
+	}
+	if (toupper((unsigned char)s[0]) == 'A') {
+		if (s[1])
+			NUM(1, o->aa_threshold = v, v >= 0 && v <= 3, "the antialiasing threshold must be from 0 to 3");
+		o->antialias = on;
+		return 0;
+	}
+	if (toupper((unsigned char)s[0]) == 'R' && (s[1] == 0 || isdigit((unsigned char)s[1]) || s[1] == '.' || s[1] == '-')) {
+		NUM(1, o->aa_depth = (int)v, v >= 1 && v <= 9 && v == floor(v), "the antialiasing depth is a whole number from 1 to 9");
+		return 0;
+	}
+	if (toupper((unsigned char)s[0]) == 'J') {
+		if (s[1])
+			NUM(1, o->jitter_amount = v, v >= 0 && v <= 1, "the jitter amount must be from 0 to 1");
+		/* As POV-Ray: an amount of 0 turns jitter off. */
+		o->jitter = on && o->jitter_amount > 0;
+		return 0;
+	}
+	if (toupper((unsigned char)s[0]) == 'Q') {
+		NUM(1, o->quality = (int)v, v >= 0 && v <= 11 && v == floor(v), "the quality is a whole number from 0 to 11");
+		return 0;
+	}
 	for (size_t i = 0; i < sizeof unimplemented / sizeof unimplemented[0]; i++)
 		if (starts_ci(s, unimplemented[i].sw)) {
-			if (toupper((unsigned char)s[0]) == 'A' || toupper((unsigned char)s[0]) == 'Q' ||
-			    toupper((unsigned char)s[0]) == 'R' || toupper((unsigned char)s[0]) == 'J' || on) {
+			if (on) {
 				char msg[600];
 				snprintf(msg, sizeof msg, "switch '%%s' (%s) is not implemented yet; ignored", unimplemented[i].what);
 				report(err, at, "warning", msg, full);
@@ -308,7 +351,28 @@ static int key_value(struct options *o, const char *key, const char *val, FILE *
 	static const struct { const char *key; const char *sw; } as_switch[] = {
 		{"Width", "W"}, {"Height", "H"}, {"Start_Row", "SR"}, {"End_Row", "ER"},
 		{"Start_Column", "SC"}, {"End_Column", "EC"}, {"Work_Threads", "WT"},
+		{"Sampling_Method", "AM"}, {"Antialias_Depth", "R"}, {"Antialias_Gamma", "AG"}, {"Quality", "Q"},
 	};
+	/* Values that do not turn their feature on: checked as the switch,
+	 * which does, and the on/off state put back. */
+	static const struct { const char *key; const char *sw; } amounts[] = {
+		{"Antialias_Threshold", "A"}, {"Jitter_Amount", "J"},
+	};
+	for (size_t i = 0; i < sizeof amounts / sizeof amounts[0]; i++)
+		if (strcasecmp(key, amounts[i].key) == 0) {
+			bool aa = o->antialias, jit = o->jitter;
+			if (!*val) {
+				report(err, at, "error", "%s needs a value", key);
+				return 1;
+			}
+			snprintf(buf, sizeof buf, "%s%s", amounts[i].sw, val);
+			if (switch_arg(o, '+', buf, err, at))
+				return 1;
+			o->antialias = aa;
+			/* Jitter_Amount=0 turns jitter off (POV-Ray's manual). */
+			o->jitter = jit && o->jitter_amount > 0;
+			return 0;
+		}
 	for (size_t i = 0; i < sizeof as_switch / sizeof as_switch[0]; i++)
 		if (strcasecmp(key, as_switch[i].key) == 0) {
 			snprintf(buf, sizeof buf, "%s%s", as_switch[i].sw, val);
@@ -334,7 +398,7 @@ static int key_value(struct options *o, const char *key, const char *val, FILE *
 	}
 	struct { const char *key; bool *dst; bool invert; } bools[] = {
 		{"Output_Alpha", &o->alpha, false}, {"Output_to_File", &o->output_to_file, false},
-		{"Verbose", NULL, false},
+		{"Verbose", NULL, false}, {"Antialias", &o->antialias, false}, {"Jitter", &o->jitter, false},
 	};
 	for (size_t i = 0; i < sizeof bools / sizeof bools[0]; i++)
 		if (strcasecmp(key, bools[i].key) == 0) {
@@ -359,9 +423,7 @@ static int key_value(struct options *o, const char *key, const char *val, FILE *
 	for (size_t i = 0; i < sizeof harmless / sizeof harmless[0]; i++)
 		if (strcasecmp(key, harmless[i]) == 0)
 			return 0;
-	static const char *const known_unimplemented[] = {"Antialias", "Antialias_Threshold",
-		"Antialias_Depth", "Sampling_Method", "Jitter", "Jitter_Amount", "Quality", "Antialias_Gamma",
-		"Initial_Frame", "Final_Frame", "Initial_Clock", "Final_Clock", "Cyclic_Animation",
+	static const char *const known_unimplemented[] = {"Initial_Frame", "Final_Frame", "Initial_Clock", "Final_Clock", "Cyclic_Animation",
 		"Subset_Start_Frame", "Subset_End_Frame", "File_Gamma", "Continue_Trace", "Create_Histogram",
 		"Version", "Radiosity_File_Name", "Remove_Bounds", "Split_Unions"};
 	for (size_t i = 0; i < sizeof known_unimplemented / sizeof known_unimplemented[0]; i++)

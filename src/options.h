@@ -31,6 +31,15 @@ struct options {
 	size_t ndefines;
 	double start_row, end_row, start_col, end_col; /* as given; < 0: unset */
 	double clock;
+	/* Antialiasing and quality (POV-Ray's +A, +AM, +R, +J, +AG, +Q). */
+	bool antialias;         /* +A */
+	double aa_threshold;    /* +A0.3: colour difference that supersamples */
+	int aa_method;          /* +AM: 1 non-recursive, 2 recursive */
+	int aa_depth;           /* +R: 1 to 9 */
+	bool jitter;            /* +J */
+	double jitter_amount;   /* +J1.0: 0 to 1 of a sub-sample cell */
+	double aa_gamma;        /* +AG2.5: gamma of the colour comparison */
+	int quality;            /* +Q: 0 to 11 */
 	bool help, version;
 };
 

@@ -126,9 +126,56 @@ check "bad width is explained" contains err.txt "bad value in '+Wabc'"
 "$LUCENT" > err.txt 2>&1; rc=$?
 check "no scene exits 1" [ $rc -eq 1 ]
 check "no scene is explained" contains err.txt "no scene file given"
-"$LUCENT" -q +W16 +H12 ok.pov +A0.3 +Oaa.png > err.txt 2>&1; rc=$?
+"$LUCENT" -q +W16 +H12 ok.pov +UR +Oaa.png > err.txt 2>&1; rc=$?
 check "unimplemented switch still renders" [ $rc -eq 0 -a -f aa.png ]
-check "unimplemented switch is reported by name" contains err.txt "switch '+A0.3' (antialiasing) is not implemented yet"
+check "unimplemented switch is reported by name" contains err.txt "switch '+UR' (remove bounds) is not implemented yet"
+
+# Antialiasing and quality switches: accepted values render, bad ones are
+# errors naming the switch (POV-Ray clamps or refuses them silently).
+"$LUCENT" -q +W16 +H12 ok.pov +A0.3 +AM2 +R4 +J0.5 +AG2.2 +Q5 -F > err.txt 2>&1; rc=$?
+check "+A0.3 +AM2 +R4 +J0.5 +AG2.2 +Q5 render quietly" [ $rc -eq 0 -a ! -s err.txt ]
+"$LUCENT" -q +W16 +H12 ok.pov +A -A0.2 -J +J -J0.3 +Q0 +Q11 +R1 +R9 +AM1 -F > err.txt 2>&1; rc=$?
+check "switch forms with and without values are accepted" [ $rc -eq 0 -a ! -s err.txt ]
+for bad in "+A3.5:antialiasing threshold must be from 0 to 3" "+Aabc:antialiasing threshold must be from 0 to 3" \
+	"+A-0.1:antialiasing threshold must be from 0 to 3" "+AM3:sampling method is 1 or 2" "+AM0:sampling method is 1 or 2" \
+	"+R0:antialiasing depth is a whole number from 1 to 9" "+R10:antialiasing depth is a whole number from 1 to 9" \
+	"+R2.5:antialiasing depth is a whole number from 1 to 9" "+R:antialiasing depth is a whole number from 1 to 9" \
+	"+J2:jitter amount must be from 0 to 1" "+J-1:jitter amount must be from 0 to 1" \
+	"+AG0:antialiasing gamma must be above 0" "+AGx:antialiasing gamma must be above 0" "+Q12:quality is a whole number from 0 to 11" \
+	"+Q-1:quality is a whole number from 0 to 11" "+Q:quality is a whole number from 0 to 11" \
+	"+Q4.5:quality is a whole number from 0 to 11"; do
+	sw=${bad%%:*}
+	"$LUCENT" -q +W16 +H12 ok.pov "$sw" -F > err.txt 2>&1; rc=$?
+	check "$sw exits 1" [ $rc -eq 1 ]
+	check "$sw is explained" contains err.txt "bad value in '$sw': the ${bad#*:}"
+done
+cat > aa.ini <<'INI'
+Antialias=on
+Antialias_Threshold=0.1
+Sampling_Method=2
+Antialias_Depth=2
+Jitter=off
+Jitter_Amount=0.5
+Antialias_Gamma=1.0
+Quality=8
+INI
+"$LUCENT" +W16 +H12 aa.ini ok.pov -F > out.txt 2>&1; rc=$?
+check "ini antialiasing and quality keys are read" [ $rc -eq 0 ]
+check "Antialias=on turns antialiasing on" grep -q "simulated .*antialiasing" out.txt
+check "Sampling_Method=2 +R2: corner samples (5x5 grid points of a 4x4 tile, and more)" \
+	grep -qE "^  samples +[0-9]+ \(([2-9]|[1-9][0-9])\.[0-9]+ per pixel\)" out.txt
+printf 'Antialias_Threshold=0.1\n' > thr.ini
+"$LUCENT" +W16 +H12 thr.ini ok.pov -F > out.txt 2>&1
+check "Antialias_Threshold alone does not turn antialiasing on" grep -qE "^  samples +192 " out.txt
+printf 'Antialias_Depth=12\n' > bad.ini
+"$LUCENT" -q +W16 +H12 bad.ini ok.pov -F > err.txt 2>&1; rc=$?
+check "a bad Antialias_Depth in an ini file exits 1" [ $rc -eq 1 ]
+check "a bad Antialias_Depth names the file and line" contains err.txt "bad.ini:1: error: bad value in '+R12'"
+printf 'Jitter=maybe\n' > bad.ini
+"$LUCENT" -q +W16 +H12 bad.ini ok.pov -F > err.txt 2>&1; rc=$?
+check "Jitter=maybe is refused" contains err.txt "Jitter wants on or off, not 'maybe'"
+"$LUCENT" +W16 +H12 +Q3 ok.pov -F > out.txt 2>&1
+check "+Q3 leaves out shadows, and says so" grep -q "left out .*shadows (quality +Q3)" out.txt
 "$LUCENT" -q ok.pov +SR0.9 +ER0.2 > err.txt 2>&1; rc=$?
 check "empty partial region exits 1" [ $rc -eq 1 ]
 

@@ -12,6 +12,20 @@ r +WT1 +O"$WORK/t1.png" && r +WT2 +O"$WORK/t2.png" && r +WT7 +O"$WORK/t7.png"
 check "+WT1 and +WT2 give identical files" cmp -s "$WORK/t1.png" "$WORK/t2.png"
 check "+WT1 and +WT7 give identical files" cmp -s "$WORK/t1.png" "$WORK/t7.png"
 
+# Antialiasing with jitter: every jitter offset is a hash of the sample's
+# coordinates, so threads and tile order cannot change a pixel. Method 1
+# compares neighbours across tile borders; method 2 shares corner samples
+# between pixels.
+differ() { ! cmp -s "$1" "$2"; }
+for m in "+AM1 +R3" "+AM2 +R3"; do
+	# shellcheck disable=SC2086 # the switches are meant to be split
+	r +A0.1 $m +J +WT1 +O"$WORK/j1.png" && r +A0.1 $m +J +WT2 +O"$WORK/j2.png" &&
+		r +A0.1 $m +J +WT7 +O"$WORK/j7.png" && r +A0.1 $m -J +WT2 +O"$WORK/nj.png"
+	check "jittered $m: +WT1 and +WT2 give identical files" cmp -s "$WORK/j1.png" "$WORK/j2.png"
+	check "jittered $m: +WT1 and +WT7 give identical files" cmp -s "$WORK/j1.png" "$WORK/j7.png"
+	check "jittered $m: the jitter changes the image" differ "$WORK/j1.png" "$WORK/nj.png"
+done
+
 # Rows: 1-37 and 38-120 by pixel number; the halves by fraction.
 r +SR1 +ER37 +O"$WORK/top.png" && r +SR38 +ER120 +O"$WORK/bottom.png"
 oiiotool "$WORK/top.png" "$WORK/bottom.png" --add -o "$WORK/rows.png"

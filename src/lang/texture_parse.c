@@ -339,8 +339,10 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			parse_advance(p);
 			struct rgbft c = parse_color(p);
 			struct pigment *pg = own_pigment(pig);
-			if (pg->kind != PIGMENT_SOLID)
+			if (pg->kind != PIGMENT_SOLID) {
 				pg->color = c; /* a solid colour keeps its own */
+				pg->quick = true;
+			}
 			continue;
 		}
 		case KW_IMAGE_MAP: {

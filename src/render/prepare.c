@@ -311,7 +311,25 @@ struct prepared *prepare_scene(struct scene *s)
 		}
 	}
 	p->max_depth = s->gs.max_trace_level;
+	p->quality = 9;
 	return p;
+}
+
+void prepare_quality(struct prepared *p, int q)
+{
+	p->quality = q;
+	if (q < 8)
+		p->features &= ~(unsigned)(FEAT_REFLECTION | FEAT_FRESNEL | FEAT_NORMALS);
+	/* Below 6 light still filters through transparent objects on its way
+	 * to a surface (POV-Ray's shadows do), but no ray is transmitted. */
+	if (q < 6)
+		p->features &= ~(unsigned)(FEAT_REFRACTION | FEAT_DISPERSION);
+	if (q < 5)
+		p->features &= ~(unsigned)FEAT_AREA_LIGHTS;
+	if (q < 4)
+		p->features &= ~(unsigned)FEAT_SHADOWS;
+	if (q < 2)
+		p->features &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR | FEAT_IRID | FEAT_SPOTLIGHTS | FEAT_LIGHT_FADE);
 }
 
 void prepared_free(struct prepared *p)

@@ -58,6 +58,7 @@ struct prepared {
 	unsigned features;               /* enum feature */
 	int max_depth;                   /* max_trace_level */
 	bool signature;                  /* --signature: flat colour per primitive */
+	int quality;                     /* +Q, 0 to 11 (9 by default): see prepare_quality */
 	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA) */
 	struct atmos_ready *atmos;       /* fog and rainbows (render/atmos.h); NULL without them */
 };
@@ -65,6 +66,13 @@ struct prepared {
 /* Prepare s for rendering. s must outlive the result. */
 struct prepared *prepare_scene(struct scene *s);
 void prepared_free(struct prepared *p);
+/* Leave out what POV-Ray's quality level q (+Q) leaves out: below 8
+ * reflection and normal perturbation, below 6 transmitted rays (shadows
+ * still filter through transparent objects; and
+ * patterned pigments with a quick_color show that colour), below 5 area
+ * lights, below 4 shadows, below 2 all lighting (each surface shows its
+ * pigment's colour). Masks p->features. */
+void prepare_quality(struct prepared *p, int q);
 /* The feature mask of a scene, as prepare_scene computes it. */
 unsigned prepare_features(const struct scene *s);
 const char *feature_name(enum feature f);

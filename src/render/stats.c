@@ -7,6 +7,7 @@ void stats_add(struct stats *into, const struct stats *from)
 		into->rays[k] += from->rays[k];
 	into->pixels += from->pixels;
 	into->samples += from->samples;
+	into->aa_pixels += from->aa_pixels;
 	into->shadow_cache_hits += from->shadow_cache_hits;
 }
 

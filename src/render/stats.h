@@ -11,7 +11,8 @@ enum ray_kind { RAY_CAMERA, RAY_SHADOW, RAY_REFLECTED, RAY_REFRACTED, RAY__COUNT
 struct stats {
 	uint64_t rays[RAY__COUNT];
 	uint64_t pixels;
-	uint64_t samples;
+	uint64_t samples;           /* camera samples (antialiasing takes several per pixel) */
+	uint64_t aa_pixels;         /* pixels antialiasing supersampled */
 	uint64_t shadow_cache_hits; /* shadow rays answered by the last blocker */
 };
 

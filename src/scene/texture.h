@@ -58,6 +58,7 @@ struct pigment {
 	int refs;
 	enum pigment_kind kind;
 	struct rgbft color;          /* SOLID: the colour; otherwise quick_color */
+	bool quick;                  /* not SOLID: a quick_color was given (shown below +Q6) */
 	struct pattern pat;
 	struct blend_map *map;       /* one reference, or NULL */
 };

@@ -396,21 +396,74 @@ static void test_unknown_switch(void **state)
 	}
 }
 
+/* Antialiasing and quality: POV-Ray 3.7's defaults (its option listing
+ * for +A alone: method 1, threshold 0.3, depth 3, jitter 1.00, gamma 2.50;
+ * quality 9), and what each switch form sets. */
+static void test_antialias(void **state)
+{
+	(void)state;
+	struct run r;
+	RUN_OK(&r, "scene.pov");
+	assert_false(r.o.antialias);
+	assert_true(r.o.aa_threshold == 0.3);
+	assert_int_equal(r.o.aa_method, 1);
+	assert_int_equal(r.o.aa_depth, 3);
+	assert_true(r.o.jitter);
+	assert_true(r.o.jitter_amount == 1.0);
+	assert_true(r.o.aa_gamma == 2.5);
+	assert_int_equal(r.o.quality, 9);
+	run_free(&r);
+	RUN_OK(&r, "+A0.1", "+AM2", "+R4", "-J", "+AG1.8", "+Q5");
+	assert_true(r.o.antialias);
+	assert_true(r.o.aa_threshold == 0.1);
+	assert_int_equal(r.o.aa_method, 2);
+	assert_int_equal(r.o.aa_depth, 4);
+	assert_false(r.o.jitter);
+	assert_true(r.o.aa_gamma == 1.8);
+	assert_int_equal(r.o.quality, 5);
+	run_free(&r);
+	/* A value after -A or -J is kept for a later +A or +J. */
+	RUN_OK(&r, "-A0.2", "-J0.4");
+	assert_false(r.o.antialias);
+	assert_false(r.o.jitter);
+	assert_true(r.o.aa_threshold == 0.2);
+	assert_true(r.o.jitter_amount == 0.4);
+	run_free(&r);
+	RUN_OK(&r, "-A0.2", "+A", "-J0.4", "+J");
+	assert_true(r.o.antialias);
+	assert_true(r.o.aa_threshold == 0.2);
+	assert_true(r.o.jitter);
+	assert_true(r.o.jitter_amount == 0.4);
+	run_free(&r);
+	/* +J0 turns jitter off (the manual: an amount <= 0 does). */
+	RUN_OK(&r, "+J0");
+	assert_false(r.o.jitter);
+	run_free(&r);
+	RUN(&r, "+R0");
+	assert_int_equal(r.rc, 1);
+	assert_contains(r.msg, "bad value in '+R0'");
+	run_free(&r);
+	RUN(&r, "+AM3");
+	assert_int_equal(r.rc, 1);
+	assert_contains(r.msg, "the sampling method is 1 or 2");
+	run_free(&r);
+}
+
 static void test_unimplemented_switch(void **state)
 {
 	(void)state;
 	struct run r;
-	RUN(&r, "+A0.3", "scene.pov");
+	RUN(&r, "+MB3", "scene.pov");
 	assert_int_equal(r.rc, 0);
-	assert_contains(r.msg, "lucent: warning: switch '+A0.3'");
-	assert_contains(r.msg, "antialiasing");
+	assert_contains(r.msg, "lucent: warning: switch '+MB3'");
+	assert_contains(r.msg, "bounding threshold");
 	assert_contains(r.msg, "not implemented");
 	/* The rest of the line is still read. */
 	assert_string_equal(r.o.input, "scene.pov");
 	run_free(&r);
-	RUN(&r, "+AM2");
+	RUN(&r, "+UR");
 	assert_int_equal(r.rc, 0);
-	assert_contains(r.msg, "switch '+AM2' (antialiasing method)");
+	assert_contains(r.msg, "switch '+UR' (remove bounds)");
 	run_free(&r);
 	/* Turning off something lucent never does is silent. */
 	RUN_OK(&r, "-P");
@@ -515,10 +568,10 @@ static void test_ini_errors(void **state)
 	run_free(&r);
 
 	/* An unimplemented key: a warning with the place, then carry on. */
-	const char *unimp = tmp_write(&t, "unimp.ini", "Antialias=on\nWidth=33\n");
+	const char *unimp = tmp_write(&t, "unimp.ini", "Remove_Bounds=on\nWidth=33\n");
 	RUN(&r, unimp);
 	assert_int_equal(r.rc, 0);
-	snprintf(want, sizeof want, "%s:1: warning: option 'Antialias' is not implemented", unimp);
+	snprintf(want, sizeof want, "%s:1: warning: option 'Remove_Bounds' is not implemented", unimp);
 	assert_contains(r.msg, want);
 	assert_int_equal(r.o.width, 33);
 	run_free(&r);
@@ -588,6 +641,7 @@ int main(void)
 		cmocka_unit_test(test_long_options),
 		cmocka_unit_test(test_declare),
 		cmocka_unit_test(test_unknown_switch),
+		cmocka_unit_test(test_antialias),
 		cmocka_unit_test(test_unimplemented_switch),
 		cmocka_unit_test(test_ini_file),
 		cmocka_unit_test(test_ini_errors),

@@ -1,0 +1,2 @@
+// quality-q8.pov: quality-levels.inc at +Q8 (tests/render/sampling.list).
+#include "quality-levels.inc"
