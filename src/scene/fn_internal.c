@@ -14,8 +14,9 @@
  *     grooves (and with a whole number of loops) only;
  *   - f_mesh1 matches for positive thread spacings only.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
- * noise3); the fractal sums built on it (f_hetero_mf, f_ridge, f_ridged_mf)
- * have POV-Ray's range and character but not its values.
+ * noise3), and so is f_hetero_mf (tests/lang/stdlib-functions-noise);
+ * f_ridge (with an offset other than 1) and f_ridged_mf (for most
+ * parameters) have POV-Ray's range and character but not its values.
  *
  * Conventions that many functions share:
  *   - "field strength" functions return P0 times a polynomial, clamped to
@@ -843,24 +844,36 @@ static double snoise(double x, double y, double z, int gen)
 }
 
 /* Musgrave's heterogeneous multifractal: P0 H, P1 lacunarity, P2 octaves,
- * P3 offset, P4 T (0: plain 1/f sum; 1: each octave weighted by the value so
- * far, so low places stay smooth), P5 the noise generator. */
+ * P3 offset, P4 T, P5 the noise generator. The value starts at offset +
+ * snoise(p); each further octave i (while i < octaves) adds
+ * (snoise(lac^i p) + offset) lac^(-iH) w, where w is the value so far
+ * raised to the whole part of T (1 when that is 0 or less); a fractional
+ * part r of octaves adds r times the next octave's term times the value so
+ * far. Measured against POV-Ray 3.7 (Musgrave's published form). */
 static double f_hetero_mf(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
-	double H = a[3], lac = a[4], oct = a[5], off = a[6], T = a[7];
-	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	double H = a[3], lac = a[4], oct = a[5], off = a[6];
+	int T = to_int(a[7], 64);
+	int gen = to_int(a[8], 1 << 20);
+	double limit = oct < 64 ? oct : 64;
 	double freq = 1, v = off + snoise(x, y, z, gen);
-	for (int i = 1; i <= octaves; i++) {
-		double part = i < octaves ? 1 : oct - octaves;
-		if (part <= 0)
-			break;
+	int i;
+	for (i = 1; i < limit; i++) {
 		freq *= lac;
 		x *= lac;
 		y *= lac;
 		z *= lac;
-		double weight = T * v + (1 - T);
-		v += part * (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
+		double weight = T > 0 ? pow(v, T) : 1;
+		v += (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
+	}
+	double rem = limit - (int)limit;
+	if (rem > 0) {
+		freq *= lac;
+		x *= lac;
+		y *= lac;
+		z *= lac;
+		v += rem * (snoise(x, y, z, gen) + off) * pow(freq, -H) * v;
 	}
 	return v;
 }

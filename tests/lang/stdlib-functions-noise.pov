@@ -20,3 +20,21 @@
 #end
 #declare F = function { f_noise3d(x * 2, y - 1, z) * 0.5 + f_noise_generator(z, x, y, 1) }
 S("in a function", F(0.4, 1.7, -2.2))
+// f_hetero_mf: whole and fractional octaves, T as a
+// whole number (0.5 acts as 0, 2 squares the weight, negative as 0),
+// negative offsets, other lacunarities and H. (f_ridge and f_ridged_mf
+// are in stdlib-functions-pending.)
+#declare Q = array[3] {<0.3, 0.7, 1.1>, <2.3, -0.7, 1.9>, <-4.1, 0.2, 0.6>}
+#for (I, 0, 2)
+	#declare P = Q[I];
+	#for (O, 1, 4)
+		S("hetero", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, O, 0.5, 0, 2))
+		S("hetero T1", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, O, 0.5, 1, 2))
+	#end
+	S("hetero 2.5", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, 2.5, 0.5, 0, 2))
+	S("hetero 3.25 T1", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, 3.25, 0.5, 1, 2))
+	S("hetero T.5", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, 6, 0.5, 0.5, 2))
+	S("hetero T2", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, 3, 0.5, 2, 2))
+	S("hetero T-1", f_hetero_mf(P.x, P.y, P.z, 0.5, 2, 3, -0.5, -1, 2))
+	S("hetero lac3", f_hetero_mf(P.x, P.y, P.z, 0.8, 3, 2, 0.3, 0, 1))
+#end
