@@ -13,9 +13,10 @@
  *   - f_helical_torus matches without twist, threshold, second fatness and
  *     grooves (and with a whole number of loops) only;
  *   - f_mesh1 matches for positive thread spacings only.
- * The noise-based ones (f_noise3d, f_noise_generator, f_hetero_mf, f_ridge,
- * f_ridged_mf) use our own gradient noise and so have POV-Ray's range and
- * character but not its values.
+ * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
+ * noise3), and so is f_hetero_mf (tests/lang/stdlib-functions-noise);
+ * f_ridge (with an offset other than 1) and f_ridged_mf (for most
+ * parameters) have POV-Ray's range and character but not its values.
  *
  * Conventions that many functions share:
  *   - "field strength" functions return P0 times a polynomial, clamped to
@@ -26,6 +27,7 @@
  *   - helix, spiral and the like measure their cross section with a norm
  *     chosen by a "cross section type" parameter (section_norm()). */
 #include "scene/fn.h"
+#include "pattern/pattern.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -808,108 +810,21 @@ static double f_comma(const double *a)
 }
 
 /* ---- noise ----
- * POV-Ray's noise cannot be reproduced without its implementation, so these
- * use our own gradient noise: same range ([0, 1]) and character (smooth,
- * about one feature per unit), different values. */
-
-/* A 32-bit hash of a lattice point. */
-static uint32_t lattice_hash(int32_t i, int32_t j, int32_t k, uint32_t seed)
-{
-	uint32_t h = seed ^ 0x9e3779b9u;
-	h ^= (uint32_t)i * 0x85ebca6bu;
-	h = (h << 13 | h >> 19) * 5 + 0xe6546b64u;
-	h ^= (uint32_t)j * 0xc2b2ae35u;
-	h = (h << 13 | h >> 19) * 5 + 0xe6546b64u;
-	h ^= (uint32_t)k * 0x27d4eb2fu;
-	h ^= h >> 16;
-	h *= 0x85ebca6bu;
-	h ^= h >> 13;
-	h *= 0xc2b2ae35u;
-	h ^= h >> 16;
-	return h;
-}
-
-/* The gradient at a lattice point (one of the 12 cube edge directions)
- * dotted with the offset (dx, dy, dz). */
-static double grad_dot(uint32_t h, double dx, double dy, double dz)
-{
-	switch (h % 12) {
-	case 0: return dx + dy;
-	case 1: return -dx + dy;
-	case 2: return dx - dy;
-	case 3: return -dx - dy;
-	case 4: return dx + dz;
-	case 5: return -dx + dz;
-	case 6: return dx - dz;
-	case 7: return -dx - dz;
-	case 8: return dy + dz;
-	case 9: return -dy + dz;
-	case 10: return dy - dz;
-	default: return -dy - dz;
-	}
-}
-
-static double fade(double t)
-{
-	return t * t * t * (t * (t * 6 - 15) + 10);
-}
-
-static double lerp(double t, double a, double b)
-{
-	return a + t * (b - a);
-}
-
-/* A lattice coordinate (a whole number) as a 32-bit integer, wrapped
- * modulo 2^32 so that far coordinates are defined too. */
-static int32_t lattice_coord(double f)
-{
-	const double m = 4294967296.0;
-	return (int32_t)(uint32_t)(f - m * floor(f / m));
-}
-
-/* Gradient noise in about [-1, 1], zero at the lattice points; NaN where a
- * coordinate is not finite. */
-static double gradient_noise(double x, double y, double z, uint32_t seed)
-{
-	if (!isfinite(x) || !isfinite(y) || !isfinite(z))
-		return NAN;
-	double fx = floor(x), fy = floor(y), fz = floor(z);
-	int32_t i = lattice_coord(fx), j = lattice_coord(fy), k = lattice_coord(fz);
-	double dx = x - fx, dy = y - fy, dz = z - fz;
-	double u = fade(dx), v = fade(dy), w = fade(dz);
-	double c[2][2][2];
-	for (int a = 0; a < 2; a++)
-		for (int b = 0; b < 2; b++)
-			for (int e = 0; e < 2; e++)
-				c[a][b][e] = grad_dot(lattice_hash(i + a, j + b, k + e, seed),
-						dx - a, dy - b, dz - e);
-	double x00 = lerp(u, c[0][0][0], c[1][0][0]);
-	double x10 = lerp(u, c[0][1][0], c[1][1][0]);
-	double x01 = lerp(u, c[0][0][1], c[1][0][1]);
-	double x11 = lerp(u, c[0][1][1], c[1][1][1]);
-	return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
-}
-
-static double clamp01(double v)
-{
-	return v < 0 ? 0 : v > 1 ? 1 : v;
-}
+ * POV-Ray's internal noise functions are its solid noise, the one its bozo
+ * pattern gives (measured: f_noise3d equals bozo with noise_generator 2 and
+ * f_noise_generator(x, y, z, G) bozo with generator G at every point), so
+ * they call the patterns' noise3. */
 
 /* Noise in [0, 1] by generator: 1 is POV-Ray's original generator, whose
  * values often clip at 0 and 1; 2 (the default) is range corrected; 3 is
  * Perlin's. The generator number is taken modulo 4 and 0 acts as 1, as in
- * POV-Ray. */
+ * POV-Ray. NaN where a coordinate is not finite. */
 static double noise_gen(double x, double y, double z, int gen)
 {
-	switch ((unsigned)gen & 3u) {
-	case 0:
-	case 1:
-		return clamp01(0.5 + 0.75 * gradient_noise(x, y, z, 1));
-	case 2:
-		return clamp01(0.5 + 0.5 * gradient_noise(x, y, z, 1));
-	default:
-		return clamp01(0.5 + 0.5 * gradient_noise(x, y, z, 3));
-	}
+	if (!isfinite(x) || !isfinite(y) || !isfinite(z))
+		return NAN;
+	int g = (int)((unsigned)gen & 3u);
+	return noise3(v3(x, y, z), g == 0 ? 1 : g);
 }
 
 static double f_noise3d(const double *a)
@@ -929,24 +844,36 @@ static double snoise(double x, double y, double z, int gen)
 }
 
 /* Musgrave's heterogeneous multifractal: P0 H, P1 lacunarity, P2 octaves,
- * P3 offset, P4 T (0: plain 1/f sum; 1: each octave weighted by the value so
- * far, so low places stay smooth), P5 the noise generator. */
+ * P3 offset, P4 T, P5 the noise generator. The value starts at offset +
+ * snoise(p); each further octave i (while i < octaves) adds
+ * (snoise(lac^i p) + offset) lac^(-iH) w, where w is the value so far
+ * raised to the whole part of T (1 when that is 0 or less); a fractional
+ * part r of octaves adds r times the next octave's term times the value so
+ * far. Measured against POV-Ray 3.7 (Musgrave's published form). */
 static double f_hetero_mf(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
-	double H = a[3], lac = a[4], oct = a[5], off = a[6], T = a[7];
-	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	double H = a[3], lac = a[4], oct = a[5], off = a[6];
+	int T = to_int(a[7], 64);
+	int gen = to_int(a[8], 1 << 20);
+	double limit = oct < 64 ? oct : 64;
 	double freq = 1, v = off + snoise(x, y, z, gen);
-	for (int i = 1; i <= octaves; i++) {
-		double part = i < octaves ? 1 : oct - octaves;
-		if (part <= 0)
-			break;
+	int i;
+	for (i = 1; i < limit; i++) {
 		freq *= lac;
 		x *= lac;
 		y *= lac;
 		z *= lac;
-		double weight = T * v + (1 - T);
-		v += part * (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
+		double weight = T > 0 ? pow(v, T) : 1;
+		v += (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
+	}
+	double rem = limit - (int)limit;
+	if (rem > 0) {
+		freq *= lac;
+		x *= lac;
+		y *= lac;
+		z *= lac;
+		v += rem * (snoise(x, y, z, gen) + off) * pow(freq, -H) * v;
 	}
 	return v;
 }

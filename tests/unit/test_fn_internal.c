@@ -418,8 +418,9 @@ static double noise_at(int n, double x, double y, double z, const double *p)
 	return fn_internal(n, a, fn_internal_params(n));
 }
 
-/* f_noise3d and f_noise_generator: POV-Ray's values are not reproduced, so
- * check their range [0, 1], that they vary, and that they are continuous. */
+/* f_noise3d and f_noise_generator: their range [0, 1], that they vary, and
+ * that they are continuous (their values against POV-Ray's are in
+ * tests/lang/stdlib-functions-noise). */
 static void test_noise_range_and_continuity(void **state)
 {
 	(void)state;
