@@ -311,6 +311,10 @@ bool parse_transform_item(struct parser *p, struct xform *out);
 /* `transform` { ... } | IDENT as a value; the caller owns the result. */
 struct xform *parse_transform_value(struct parser *p);
 
+/* The camera statement at the `camera` keyword, into c (which holds the
+ * camera to start from, camera_default()) (camera_parse.c). */
+void parse_camera(struct parser *p, struct camera *c);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an
