@@ -161,6 +161,9 @@ unsigned prepare_features(const struct scene *s)
 		f &= ~(unsigned)(FEAT_PHONG | FEAT_SPECULAR | FEAT_IRID | FEAT_CAUSTICS);
 	if (shadow_light && caster)
 		f |= FEAT_SHADOWS;
+	/* cameras: focal blur needs an aperture and blur_samples. */
+	if (s->camera.aperture > 0 && s->camera.blur_samples_max > 0)
+		f |= FEAT_FOCAL_BLUR;
 	return f;
 }
 

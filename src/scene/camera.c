@@ -34,6 +34,26 @@ static double omnimax_r45(void)
 	return r;
 }
 
+/* z^2 for the two-sided normal quantile z of probability p (0 < p < 1):
+ * P(|N(0,1)| <= z) = p, by Newton's method on erf. */
+static double normal_quantile2(double p)
+{
+	if (!(p > 0 && p < 1))
+		p = 0.9;
+	double z = 1.5;
+	for (int i = 0; i < 60; i++) {
+		double f = erf(z / M_SQRT2) - p;
+		double df = sqrt(2 / M_PI) * exp(-z * z / 2);
+		double step = f / df;
+		z -= step;
+		if (z < 1e-6)
+			z = 1e-6;
+		if (fabs(step) < 1e-14)
+			break;
+	}
+	return z * z;
+}
+
 struct camera camera_default(void)
 {
 	struct camera c = {
@@ -75,6 +95,7 @@ void camera_update(struct camera *c)
 	c->h_rad = h * (M_PI / 180);
 	c->v_rad = v * (M_PI / 180);
 	c->focal_dist = v3_dot(v3_sub(c->focal_point, c->location), c->dn);
+	c->blur_z2 = normal_quantile2(c->confidence);
 
 	/* Omnimax: the lens plane is [-1,1]^2 scaled so that up/right keep
 	 * their ratio q; a short image (q < 1) keeps the top edge at the
@@ -246,16 +267,20 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
 		return false;
 	if (lu == 0 && lv == 0)
 		return true;
-	/* Focal blur: move the origin across the lens (diameter aperture, in
-	 * the plane of right and up) and aim at the point where the pinhole
-	 * ray meets the plane in focus. A ray running along that plane keeps
-	 * its pinhole path. */
+	/* Focal blur: move the origin across the lens, in the plane of right
+	 * and up, and aim at the point where the pinhole ray meets the plane
+	 * in focus. POV-Ray's lens has radius aperture/4 (measured: the blur
+	 * of an edge at distance z with focus at f spans aperture/4 *
+	 * |1/f - 1/z| |D|/|R| of the image width, for f = 1, 2, 3, 5 and z
+	 * on both sides of f). A ray running along the focal plane keeps its
+	 * pinhole path. */
 	double cosd = v3_dot(r->dir, c->dn);
 	if (cosd < 1e-6)
 		return true;
 	double t = (c->focal_dist - v3_dot(v3_sub(r->org, c->location), c->dn)) / cosd;
 	vec3 focus = v3_madd(r->org, r->dir, t);
-	r->org = v3_add(r->org, comb(lu * c->aperture, c->rn, lv * c->aperture, c->un, 0, c->dn));
+	double k = c->aperture / 2;
+	r->org = v3_add(r->org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
 	r->dir = v3_norm(v3_sub(focus, r->org));
 	return true;
 }

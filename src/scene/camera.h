@@ -24,7 +24,7 @@ struct camera {
 	                        * (the kind's default: 90, spherical 360) */
 	double v_angle;        /* spherical: vertical angle; negative: half the horizontal */
 	/* Focal blur: on when aperture > 0 and blur_samples_max > 0. */
-	double aperture;       /* the lens' diameter, in the units of right and up */
+	double aperture;       /* lens size: POV-Ray's lens radius is aperture/4 */
 	vec3 focal_point;      /* a point of the plane in focus (parallel to right and up) */
 	int blur_samples_min, blur_samples_max;
 	double confidence, variance;
@@ -35,6 +35,7 @@ struct camera {
 	double rl, ul;         /* lengths of right and up */
 	double h_rad, v_rad;   /* the angles in effect, in radians */
 	double focal_dist;     /* distance of the plane in focus along dn */
+	double blur_z2;        /* z^2 of the normal quantile for confidence (two-sided) */
 	double omni_sx, omni_sy, omni_oy; /* omnimax: image to lens-plane scale and offset */
 };
 
