@@ -44,4 +44,10 @@ iinfo "$WORK/top.png" > "$WORK/info.txt"
 check "a partial render keeps the full image size" grep -qE "160 x +120" "$WORK/info.txt"
 oiiotool "$WORK/top.png" --cut 160x83+0+37 --printstats > "$WORK/stats.txt" 2>&1
 check "outside the region is black" grep -qE "Stats Max: 0(\.0+)? 0(\.0+)? 0(\.0+)? " "$WORK/stats.txt"
+# --- cameras: focal blur (lens samples hashed per pixel) ---
+blur="$top_srcdir/scenes/cam-focal-adaptive.pov"
+"$LUCENT" -q +W80 +H60 "$blur" +WT1 +O"$WORK/fb1.png" &&
+	"$LUCENT" -q +W80 +H60 "$blur" +WT2 +O"$WORK/fb2.png"
+check "focal blur: +WT1 and +WT2 give identical files" cmp -s "$WORK/fb1.png" "$WORK/fb2.png"
+# --- end cameras ---
 finish

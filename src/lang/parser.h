@@ -382,6 +382,10 @@ struct object *parse_light_group(struct parser *p, bool child);
 /* Free a heap `struct light` and what it owns (for parse_own). */
 void parse_free_light(void *light);
 
+/* The camera statement at the `camera` keyword, into c (which holds the
+ * camera to start from, camera_default()) (camera_parse.c). */
+void parse_camera(struct parser *p, struct camera *c);
+
 /* Statements (stmt.c). */
 void parse_statement(struct parser *p);
 /* A scene-item value for #declare when the right-hand side is not an

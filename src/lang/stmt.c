@@ -1,6 +1,7 @@
-/* stmt.c: the scene statements: objects and their modifiers, textures,
- * lights, the camera, background and global settings. Each grammar
- * function names its production above it. */
+/* stmt.c: the scene statements' dispatch (objects to objects.c, lights to
+ * light_parse.c, the camera to camera_parse.c, background, fog, sky,
+ * rainbow and global settings to atmos_parse.c), arrays and the values of
+ * declarations. Each grammar function names its production above it. */
 #include "lang/parser.h"
 
 #include "scene/fn.h"
@@ -14,75 +15,6 @@ void parse_free_texture_holder(void *h)
 {
 	texture_unref(*(struct texture **)h);
 	free(h);
-}
-
-/* ---- camera ---- */
-
-/* camera := camera '{' [IDENT] [perspective] { camera_item } '}'
- * camera_item := location V | look_at V | angle F | right V | up V
- *              | direction V | sky V | transform_item
- * As in POV-Ray, the order of the items does not matter: the vectors are
- * set first, then the angle fixes the direction's length, then look_at
- * turns the frame, and the transformations apply last, in order. */
-static void parse_camera(struct parser *p, struct camera *c)
-{
-	parse_advance(p);
-	parse_expect(p, TOK_LBRACE);
-	const struct value *v = parse_ident_value(p);
-	if (v) {
-		if (v->kind != VAL_CAMERA)
-			parse_wrong_kind(p, v, "a camera");
-		*c = *v->cam;
-		parse_advance(p);
-	}
-	parse_accept_kw(p, KW_PERSPECTIVE);
-	double angle = -1;
-	bool look = false;
-	vec3 look_at = {0, 0, 0};
-	struct srcpos look_pos = {0, 0, 0};
-	struct xform xf = xform_identity();
-	bool moved = false;
-	while (!parse_accept(p, TOK_RBRACE)) {
-		const struct token *t = parse_peek(p);
-		struct srcpos at = t->pos;
-		struct xform step;
-		if (parse_transform_item(p, &step)) {
-			xf = xform_compose(&step, &xf);
-			moved = true;
-			continue;
-		}
-		if (t->kind != TOK_KEYWORD)
-			parse_expected(p, "a camera item or '}'");
-		switch (t->kw) {
-		case KW_LOCATION: parse_advance(p); c->location = parse_vector(p); break;
-		case KW_RIGHT: parse_advance(p); c->right = parse_vector(p); break;
-		case KW_UP: parse_advance(p); c->up = parse_vector(p); break;
-		case KW_DIRECTION: parse_advance(p); c->direction = parse_vector(p); break;
-		case KW_SKY: parse_advance(p); c->sky = parse_vector(p); break;
-		case KW_ANGLE: {
-			parse_advance(p);
-			struct srcpos apos = parse_peek(p)->pos;
-			angle = parse_float(p);
-			if (!(angle > 0 && angle < 180))
-				parse_error_at(p, apos, "a perspective camera's angle must be between 0 and 180 degrees, not %g", angle);
-			break;
-		}
-		case KW_LOOK_AT:
-			parse_advance(p);
-			look = true;
-			look_pos = at;
-			look_at = parse_vector(p);
-			break;
-		default:
-			parse_expected(p, "a camera item or '}'");
-		}
-	}
-	if (angle > 0)
-		camera_set_angle(c, angle);
-	if (look && !camera_look_at(c, look_at))
-		parse_error_at(p, look_pos, "look_at cannot point along the sky vector or at the camera's own location");
-	if (moved)
-		camera_transform(c, &xf);
 }
 
 /* ---- arrays ---- */

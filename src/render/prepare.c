@@ -185,6 +185,9 @@ unsigned prepare_features(const struct scene *s)
 			f |= FEAT_RAINBOW;
 	if (s->atmos.sky)
 		f |= FEAT_SKY;
+	/* cameras: focal blur needs an aperture and blur_samples. */
+	if (s->camera.aperture > 0 && s->camera.blur_samples_max > 0)
+		f |= FEAT_FOCAL_BLUR;
 	return f;
 }
 

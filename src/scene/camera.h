@@ -1,5 +1,8 @@
 /* camera.h: the camera as the parser describes it (POV-Ray's vectors) and
- * as the renderer uses it (camera_ray). */
+ * as the renderer uses it (camera_ray). Every projection maps an image
+ * position to a ray exactly as POV-Ray 3.7 does; the formulas, measured
+ * from POV-Ray's renders, are written out in camera.c and in the Cameras
+ * section of doc/lights-cameras.md. */
 #ifndef LUCENT_CAMERA_H
 #define LUCENT_CAMERA_H
 
@@ -17,32 +20,51 @@ struct camera {
 	enum camera_kind kind;
 	int cylinder_type;     /* CAMERA_CYLINDER: 1 to 4 */
 	vec3 location, direction, right, up, sky;
-	double angle;          /* horizontal angle in degrees; 0: not given */
-	double v_angle;        /* spherical: vertical angle; 0: not given */
-	/* Focal blur: aperture 0 is a pinhole (no blur). */
-	double aperture;
-	vec3 focal_point;
+	double angle;          /* horizontal angle in degrees; negative: not given
+	                        * (the kind's default: 90, spherical 360) */
+	double v_angle;        /* spherical: vertical angle; negative: half the horizontal */
+	/* Focal blur: on when aperture > 0 and blur_samples_max > 0. */
+	double aperture;       /* lens size: POV-Ray's lens radius is aperture/4 */
+	vec3 focal_point;      /* a point of the plane in focus (parallel to right and up) */
 	int blur_samples_min, blur_samples_max;
 	double confidence, variance;
 	struct srcpos pos;
+
+	/* Derived by camera_update from the fields above; read by camera_ray. */
+	vec3 dn, rn, un;       /* unit direction, right and up */
+	double rl, ul;         /* lengths of right and up */
+	double h_rad, v_rad;   /* the angles in effect, in radians */
+	double focal_dist;     /* distance of the plane in focus along dn */
+	double blur_z2;        /* z^2 of the normal quantile for confidence (two-sided) */
+	double omni_sx, omni_sy, omni_oy; /* omnimax: image to lens-plane scale and offset */
 };
 
-/* POV-Ray's default camera: at the origin looking along +z, right
- * <1.33,0,0>, up y, direction z. */
+/* POV-Ray's default camera: perspective, at the origin looking along +z,
+ * right <1.33,0,0>, up y, direction z, sky y; no focal blur (confidence
+ * 0.9, variance 1/128). Already updated. */
 struct camera camera_default(void);
 /* Point the camera at `at`, keeping the lengths of direction, right and up
- * and the handedness of the frame, with `sky` as the up reference. Returns
- * false if `at` is the location or straight along the sky vector. */
-bool camera_look_at(struct camera *c, vec3 at);
-/* Set the horizontal field of view (degrees) by rescaling direction. */
+ * and the handedness of the frame, with `sky` as the up reference. When
+ * `at` lies straight along the sky vector (or sky is zero), the given
+ * right vector is kept as the reference instead, and *along_sky is set (a
+ * warning for the parser), as POV-Ray does. Returns false if `at` is the
+ * location, or if right is also along the new direction. */
+bool camera_look_at(struct camera *c, vec3 at, bool *along_sky);
+/* Set the horizontal field of view of a perspective camera (degrees,
+ * 0 < degrees < 180) by rescaling direction:
+ * |direction| = 0.5 |right| / tan(degrees / 2). */
 void camera_set_angle(struct camera *c, double degrees);
+/* Move the camera's location, frame and focal point by t. */
 void camera_transform(struct camera *c, const struct xform *t);
+/* Recompute the derived fields; call after changing any other field. */
+void camera_update(struct camera *c);
 
 /* The ray through image position (x, y) (pixels from the top-left corner
  * of a w x h image; a pixel's centre is at +0.5) with the lens sample
- * (lu, lv) in [-0.5, 0.5]^2 (0, 0: the centre; used with focal blur).
- * The direction is unit. Returns false where the camera has no ray (e.g.
- * outside a fisheye's circle): the pixel is then black, as in POV-Ray. */
+ * (lu, lv) in the disc of radius 0.5 (0, 0: the centre, a pinhole; used
+ * with focal blur). The direction is unit. Returns false where the camera
+ * has no ray (outside a fisheye's or omnimax's circle): the pixel is then
+ * black, as in POV-Ray. */
 bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
                 struct ray *r);
 

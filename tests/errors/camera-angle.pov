@@ -1,2 +1,2 @@
-// expect: 2:46: a perspective camera's angle must be between 0 and 180 degrees, not 190
+// expect: 2:46: a perspective camera's angle must be less than 180 degrees, not 190
 camera { location <0, 0, -5> look_at 0 angle 190 }

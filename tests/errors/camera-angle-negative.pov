@@ -1,0 +1,2 @@
+// expect: 2:24: a camera's angle cannot be negative (-30)
+camera { fisheye angle -30 }

@@ -1,2 +1,0 @@
-// expect: 2:29: look_at cannot point along the sky vector or at the camera's own location
-camera { location <0, 0, 0> look_at <0, 0, 0> }
