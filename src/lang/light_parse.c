@@ -336,6 +336,44 @@ static void tag_leaves(struct parser *p, struct group_ctx *c, int *mslot, struct
 	}
 }
 
+/* Give the leaves of o, the copy of a declared object being placed, their
+ * own copies of the light groups they are in (with copies of the groups'
+ * lights), so that the transformations of this placement move those lights
+ * and no other placement shares them: POV-Ray copies a group's lights with
+ * the object. */
+static void remap_leaves(struct parser *p, struct group_ctx *c, int *mslot, struct object *o)
+{
+	struct object **kids;
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			remap_leaves(p, c, mslot, kids[i]);
+		return;
+	}
+	if (o->light_group != 0)
+		o->light_group = remap_group(p, c, mslot, o->light_group);
+}
+
+void parse_place_light_groups(struct parser *p, struct object *o)
+{
+	if (p->scene->ngroups <= 1)
+		return;
+	struct group_ctx c = {0};
+	c.capmap = 8;
+	c.map = malloc((size_t)c.capmap * sizeof *c.map);
+	if (!c.map) abort();
+	int mslot = parse_own(p, c.map, free_map_cb);
+	remap_leaves(p, &c, &mslot, o);
+	parse_release(p, mslot);
+	free(c.map);
+}
+
+void parse_move_lights(struct parser *p, size_t from, const struct xform *t)
+{
+	for (size_t i = from; i < p->scene->nlights; i++)
+		light_transform(&p->scene->lights[i], t);
+}
+
 /* light_group := light_group '{' { OBJECT | light_source | transform_item
  *                | global_lights [BOOL] } '}'
  * A union of its objects, lit by its own lights (and those of the groups
@@ -362,8 +400,7 @@ struct object *parse_light_group(struct parser *p, bool child)
 		if (parse_transform_item(p, &t)) {
 			object_transform(u, &t);
 			object_transform_textures(u, &t);
-			for (size_t i = c.first_light; i < s->nlights; i++)
-				light_transform(&s->lights[i], &t);
+			parse_move_lights(p, c.first_light, &t);
 			continue;
 		}
 		const struct token *tk = parse_peek(p);

@@ -759,6 +759,7 @@ struct obj_state {
 	struct mesh_builder *mb;  /* mesh or mesh2 being read, or NULL */
 	bool clip_is_bound, bound_is_clip;
 	unsigned flags;           /* flags given to a CSG, for its children */
+	size_t lights_from;       /* the scene's lights from here on were read inside it */
 };
 
 /* Replace s->o by a primitive rebuilt from s->args (after `open` or
@@ -791,6 +792,7 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	if (parse_transform_item(p, &t)) {
 		object_transform(o, &t);
 		object_transform_textures(o, &t);
+		parse_move_lights(p, s->lights_from, &t);
 		return true;
 	}
 	const struct token *tk = parse_peek(p);
@@ -919,6 +921,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	parse_advance(p);
 	parse_expect(p, TOK_LBRACE);
 	struct obj_state s = {0};
+	s.lights_from = p->scene->nlights;
 	struct shape_args args;
 	int mslot = -1;
 	switch (k) {
@@ -936,6 +939,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		s.o = object_copy(v->obj);
 		s.o->pos = at;
 		parse_advance(p);
+		parse_place_light_groups(p, s.o);
 		break;
 	}
 	case KW_UNION: s.o = csg_new(CSG_UNION, at); break;
