@@ -383,6 +383,9 @@ struct object *parse_light_group(struct parser *p, bool child);
  * of the light groups they are in and of those groups' lights (added to
  * the scene), so that this placement's transformations move them. */
 void parse_place_light_groups(struct parser *p, struct object *o);
+/* light_source { ... } at the current token, in the body of CSG csg: a
+ * global light that csg carries (see light_parse.c). */
+void parse_csg_light(struct parser *p, struct object *csg);
 /* Apply t to the scene's lights from number `from` on: the lights read
  * inside an object statement move with its transformations. */
 void parse_move_lights(struct parser *p, size_t from, const struct xform *t);
