@@ -310,12 +310,32 @@ static int remap_group(struct parser *p, struct group_ctx *c, int *mslot, int ol
 	return n;
 }
 
+/* A new carrier group holding copies of the lights of carrier `old` (the
+ * lights of a declared CSG being placed). */
+static int copy_carrier(struct scene *s, int old)
+{
+	int n = scene_add_light_group(s, 0);
+	s->groups[n].carrier = true;
+	size_t nl = s->nlights;
+	for (size_t i = 0; i < nl; i++) {
+		if (s->lights[i].group != old)
+			continue;
+		struct light copy = s->lights[i];
+		light_copy_parts(&copy);
+		copy.group = n;
+		scene_add_light(s, &copy);
+	}
+	return n;
+}
+
 /* Give the leaves of o (just read into the group) their group: this one
  * for leaves outside any group; the groups made inside this statement are
  * put under it; a declared group placed here gets a copy of its own. */
 static void tag_leaves(struct parser *p, struct group_ctx *c, int *mslot, struct object *o)
 {
 	struct object **kids;
+	if (o->carried_lights != 0 && o->carried_lights < c->start)
+		o->carried_lights = copy_carrier(p->scene, o->carried_lights);
 	if (o->ops->children) {
 		size_t n = o->ops->children(o, &kids);
 		for (size_t i = 0; i < n; i++)
@@ -334,6 +354,71 @@ static void tag_leaves(struct parser *p, struct group_ctx *c, int *mslot, struct
 	} else {
 		o->light_group = remap_group(p, c, mslot, g);
 	}
+}
+
+/* Give the leaves of o, the copy of a declared object being placed, their
+ * own copies of the light groups they are in (with copies of the groups'
+ * lights), and its CSGs their own copies of the lights they carry, so that
+ * the transformations of this placement move those lights and no other
+ * placement shares them: POV-Ray copies a group's lights with the object. */
+static void remap_leaves(struct parser *p, struct group_ctx *c, int *mslot, struct object *o)
+{
+	struct object **kids;
+	if (o->carried_lights != 0)
+		o->carried_lights = copy_carrier(p->scene, o->carried_lights);
+	if (o->ops->children) {
+		size_t n = o->ops->children(o, &kids);
+		for (size_t i = 0; i < n; i++)
+			remap_leaves(p, c, mslot, kids[i]);
+		return;
+	}
+	if (o->light_group != 0)
+		o->light_group = remap_group(p, c, mslot, o->light_group);
+}
+
+void parse_place_light_groups(struct parser *p, struct object *o)
+{
+	if (p->scene->ngroups <= 1)
+		return;
+	struct group_ctx c = {0};
+	c.capmap = 8;
+	c.map = malloc((size_t)c.capmap * sizeof *c.map);
+	if (!c.map) abort();
+	int mslot = parse_own(p, c.map, free_map_cb);
+	remap_leaves(p, &c, &mslot, o);
+	parse_release(p, mslot);
+	free(c.map);
+}
+
+/* csg_light := light_source '{' ... '}'   (in the body of a CSG)
+ * POV-Ray 3.7 (measured): the light lights the whole scene, as a global
+ * light even inside a light_group; the CSG's later transformations move
+ * it; it is copied with the CSG and shines only where the CSG is placed
+ * (a declared CSG that is never placed gives no light). It is no part of
+ * the solid, but its looks_like object is one of the CSG's children. */
+void parse_csg_light(struct parser *p, struct object *csg)
+{
+	struct scene *s = p->scene;
+	struct light *l = malloc(sizeof *l);
+	if (!l) abort();
+	memset(l, 0, sizeof *l);
+	int slot = parse_own(p, l, parse_free_light);
+	parse_light(p, l);
+	if (csg->carried_lights == 0) {
+		csg->carried_lights = scene_add_light_group(s, 0);
+		s->groups[csg->carried_lights].carrier = true;
+	}
+	l->group = csg->carried_lights;
+	place_looks_like(p, l, csg);
+	scene_add_light(s, l);
+	parse_release(p, slot);
+	free(l);
+}
+
+void parse_move_lights(struct parser *p, size_t from, const struct xform *t)
+{
+	for (size_t i = from; i < p->scene->nlights; i++)
+		light_transform(&p->scene->lights[i], t);
 }
 
 /* light_group := light_group '{' { OBJECT | light_source | transform_item
@@ -362,8 +447,7 @@ struct object *parse_light_group(struct parser *p, bool child)
 		if (parse_transform_item(p, &t)) {
 			object_transform(u, &t);
 			object_transform_textures(u, &t);
-			for (size_t i = c.first_light; i < s->nlights; i++)
-				light_transform(&s->lights[i], &t);
+			parse_move_lights(p, c.first_light, &t);
 			continue;
 		}
 		const struct token *tk = parse_peek(p);

@@ -759,6 +759,8 @@ struct obj_state {
 	struct mesh_builder *mb;  /* mesh or mesh2 being read, or NULL */
 	bool clip_is_bound, bound_is_clip;
 	unsigned flags;           /* flags given to a CSG, for its children */
+	size_t lights_from;       /* the scene's lights from here on were read inside it */
+	bool light_first;         /* a difference whose body began with a light_source */
 };
 
 /* Replace s->o by a primitive rebuilt from s->args (after `open` or
@@ -791,6 +793,7 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	if (parse_transform_item(p, &t)) {
 		object_transform(o, &t);
 		object_transform_textures(o, &t);
+		parse_move_lights(p, s->lights_from, &t);
 		return true;
 	}
 	const struct token *tk = parse_peek(p);
@@ -919,6 +922,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	parse_advance(p);
 	parse_expect(p, TOK_LBRACE);
 	struct obj_state s = {0};
+	s.lights_from = p->scene->nlights;
 	struct shape_args args;
 	int mslot = -1;
 	switch (k) {
@@ -936,6 +940,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		s.o = object_copy(v->obj);
 		s.o->pos = at;
 		parse_advance(p);
+		parse_place_light_groups(p, s.o);
 		break;
 	}
 	case KW_UNION: s.o = csg_new(CSG_UNION, at); break;
@@ -980,8 +985,23 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	s.slot = parse_own(p, s.o, free_object_cb);
 	while (!parse_accept(p, TOK_RBRACE)) {
 		const struct token *tk = parse_peek(p);
+		if (is_csg && tk->kind == TOK_KEYWORD && tk->kw == KW_LIGHT_SOURCE) {
+			struct object **kids;
+			if (k == KW_DIFFERENCE && s.o->ops->children(s.o, &kids) == 0)
+				s.light_first = true;
+			parse_csg_light(p, s.o);
+			continue;
+		}
 		if (is_csg && tk->kind == TOK_KEYWORD && parse_is_object_start((enum kw)tk->kw)) {
-			csg_add(s.o, parse_object_in(p, true));
+			struct object **kids;
+			struct object *c = parse_object_in(p, true);
+			/* In POV-Ray a light that comes first in a difference takes
+			 * the place of the base, so every object in it is subtracted
+			 * (measured: the same image as an intersection of the objects
+			 * inverted): the first object is inverted. */
+			if (s.light_first && s.o->ops->children(s.o, &kids) == 0)
+				c->flags ^= OBJ_INVERSE;
+			csg_add(s.o, c);
 			continue;
 		}
 		if (!parse_object_modifier(p, &s)) {

@@ -379,6 +379,16 @@ void parse_light_statement(struct parser *p);
  * lights go into the scene. `child` as for parse_object's !scene_level.
  * The caller owns the result. */
 struct object *parse_light_group(struct parser *p, bool child);
+/* Give the leaves of o, a copy of a declared object being placed, copies
+ * of the light groups they are in and of those groups' lights (added to
+ * the scene), so that this placement's transformations move them. */
+void parse_place_light_groups(struct parser *p, struct object *o);
+/* light_source { ... } at the current token, in the body of CSG csg: a
+ * global light that csg carries (see light_parse.c). */
+void parse_csg_light(struct parser *p, struct object *csg);
+/* Apply t to the scene's lights from number `from` on: the lights read
+ * inside an object statement move with its transformations. */
+void parse_move_lights(struct parser *p, size_t from, const struct xform *t);
 /* Free a heap `struct light` and what it owns (for parse_own). */
 void parse_free_light(void *light);
 

@@ -33,6 +33,19 @@
 
 enum { PURPOSE_JITTER_U = 0x4c4a5501, PURPOSE_JITTER_V = 0x4c4a5602 };
 
+/* Mark in live[] the carrier groups of the CSGs in o's tree. */
+static void mark_carriers(struct object *o, bool *live, size_t n)
+{
+	if (o->carried_lights > 0 && (size_t)o->carried_lights < n)
+		live[o->carried_lights] = true;
+	struct object **kids;
+	if (o->ops->children) {
+		size_t k = o->ops->children(o, &kids);
+		for (size_t i = 0; i < k; i++)
+			mark_carriers(kids[i], live, n);
+	}
+}
+
 struct light_set *light_set_new(const struct prepared *p)
 {
 	const struct scene *sc = p->scene;
@@ -91,6 +104,12 @@ struct light_set *light_set_new(const struct prepared *p)
 	 * manual's "inherit" does not happen), and ignores global_lights on
 	 * the inner ones. */
 	s->ngroups = sc->ngroups ? sc->ngroups : 1;
+	/* Lights carried by CSGs are global lights when their CSG is in the
+	 * scene, and light nothing when it was only declared. */
+	bool *live = calloc(s->ngroups, sizeof *live);
+	if (!live) abort();
+	for (size_t i = 0; i < sc->nobjects; i++)
+		mark_carriers(sc->objects[i], live, s->ngroups);
 	s->group = calloc(s->ngroups, sizeof *s->group);
 	s->ngroup = calloc(s->ngroups, sizeof *s->ngroup);
 	if (!s->group || !s->ngroup) abort();
@@ -106,10 +125,16 @@ struct light_set *light_set_new(const struct prepared *p)
 		}
 		for (size_t i = 0; i < s->n; i++) {
 			int lg = sc->lights[i].group;
+			if (lg > 0 && sc->groups[lg].carrier) {
+				if (!live[lg])
+					continue;
+				lg = 0;
+			}
 			if (lg == 0 ? global : (size_t)lg == g)
 				s->group[g][s->ngroup[g]++] = i;
 		}
 	}
+	free(live);
 	return s;
 }
 

@@ -54,6 +54,10 @@ struct light {
 struct light_group {
 	int parent;          /* the enclosing group; 0: none */
 	bool global_lights;  /* the scene's global lights light it too */
+	/* Not a light group but the lights read in one CSG's body (its
+	 * carried_lights): they light the scene as global lights when that CSG
+	 * is in the scene, and nothing when it is only declared. */
+	bool carrier;
 };
 
 /* POV-Ray's defaults: a white point light at the origin. */

@@ -82,6 +82,8 @@ struct object {
 	struct srcpos pos;        /* where the statement began */
 	unsigned id;              /* creation order, for stable output */
 	int light_group;          /* the light_group it belongs to (0: none): which lights reach it */
+	int carried_lights;       /* CSG: the group (a carrier, see light.h) of the light_sources
+	                           * read in its body; 0: none */
 };
 
 /* Initialise the header of a freshly allocated primitive. */
