@@ -137,6 +137,10 @@ check "an unknown limit: exit 2" [ $? -eq 2 ]
 check "an unknown limit: named" contains "$WORK/bad.log" "$C/bad.list:1: unknown limit '-pixels'"
 $REGRESS --no-report -n nothing "$C/corpus.list" > "$WORK/bad.log" 2>&1
 check "-n matching nothing: exit 2" [ $? -eq 2 ]
+echo "a-same 40 30" > "$C/bad.list"
+$REGRESS --no-report "$C/corpus.list" "$C/bad.list" > "$WORK/bad.log" 2>&1
+check "a scene listed twice: exit 2" [ $? -eq 2 ]
+check "a scene listed twice: named" contains "$WORK/bad.log" "listed more than once: a-same"
 
 # A folder of scenes without a list: its *.pov at 160x120, with the
 # references in its expected/ and povray/ folders (none here: missing).
@@ -155,13 +159,24 @@ fi
 
 # The project's corpus: every scene says in a header comment what it
 # exercises (its first line is a // comment of some length).
+ok=1
 for f in "$top_srcdir"/scenes/*.pov; do
 	first=$(head -n 1 "$f")
 	case $first in
 	'// '??????????*) ;;
-	*) fail "$(basename "$f"): no header comment saying what the scene exercises" ;;
+	*) fail "$(basename "$f"): no header comment saying what the scene exercises"; ok=0 ;;
 	esac
 done
-pass "every scene of scenes/ has a header comment"
+[ $ok -eq 1 ] && pass "every scene of scenes/ has a header comment"
+# ... and is rendered by a line of tests/render/*.list.
+ok=1
+for f in "$top_srcdir"/scenes/*.pov; do
+	n=$(basename "$f" .pov)
+	if ! grep -q "^$n " "$top_srcdir"/tests/render/*.list; then
+		fail "$n.pov: in no tests/render/*.list"
+		ok=0
+	fi
+done
+[ $ok -eq 1 ] && pass "every scene of scenes/ is in a list"
 
 finish

@@ -245,6 +245,9 @@ for arg in "$@"; do
 	fi
 done
 [ -s "$tmp/scenes" ] || die "no scene selected${names:+ (-n$names)} in $args"
+# A name names the references and the report's images: it must be unique.
+dups=$(cut -d"$US" -f1 "$tmp/scenes" | sort | uniq -d | tr '\n' ' ')
+[ -z "$dups" ] || die "listed more than once: $dups"
 for pat in $names; do
 	found=0
 	while IFS=$US read -r name rest; do
