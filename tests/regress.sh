@@ -101,6 +101,8 @@ for fig in mean max; do
 		grep -q "<td>$v</td>\\|<td>$v at" "$WORK/z.html"
 done
 check "the report has the PSNR column" contains "$WORK/z.html" "PSNR (dB)"
+check "the report's index links to the scene first" \
+	[ "$(grep -o 'href="#[^"]*"' "$R/index.html" | head -n 1)" = 'href="#z-changed"' ]
 check "the report has the changed pixels" contains "$WORK/z.html" "24 px (2%) &gt; 0"
 check "the report has both times" contains "$WORK/z.html" "POV-Ray 0.75 s CPU, 1.5 s wall"
 check "the report marks it failed" contains "$WORK/z.html" '<td class="FAIL">FAIL</td>'
@@ -120,8 +122,9 @@ check "the heat map is dark where the images agree ($v)" awk -v v="${v:-1}" 'BEG
 v=$(maxof 12 13)
 check "the heat map is bright where they differ ($v)" awk -v v="${v:-0}" 'BEGIN { exit !(v > 0.8) }'
 
-# -n selects scenes; -q prints only the failures.
-$REGRESS -q -n 'a-*' -n m-near --no-report "$C/corpus.list" > "$WORK/sel.log" 2>&1
+# -n selects scenes; -q prints only the failures; options may follow the
+# operands.
+$REGRESS -q -n 'a-*' "$C/corpus.list" -n m-near --no-report > "$WORK/sel.log" 2>&1
 check "-n selects: exit 0" [ $? -eq 0 ]
 check "-n selects: 2 passed" [ "$(tail -n 1 "$WORK/sel.log")" = "2 passed, 0 failed" ]
 check "-q prints no PASS line" [ "$(grep -c '^PASS' "$WORK/sel.log")" -eq 0 ]

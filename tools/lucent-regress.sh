@@ -69,35 +69,52 @@ povdir=""
 names=""
 quiet=0
 refresh=""
-while [ $# -gt 0 ]; do
-	case $1 in
-	-j | --jobs) [ $# -ge 2 ] || die "$1 needs a number"; jobs=$2; shift ;;
-	-j*) jobs=${1#-j} ;;
-	--jobs=*) jobs=${1#*=} ;;
-	-o | --output) [ $# -ge 2 ] || die "$1 needs a folder"; report=$2; shift ;;
-	--output=*) report=${1#*=} ;;
+# Options may come before or after the DIR and LIST operands: each
+# argument is taken from the front, and an operand is put back at the end.
+n=$#
+while [ "$n" -gt 0 ]; do
+	arg=$1
+	shift
+	n=$((n - 1))
+	case $arg in
+	-j | --jobs | -o | --output | -s | --scenes | -e | --expected | -p | --povray | -n | --name)
+		[ "$n" -ge 1 ] || die "$arg needs a value"
+		val=$1
+		shift
+		n=$((n - 1))
+		case $arg in
+		-j | --jobs) jobs=$val ;;
+		-o | --output) report=$val ;;
+		-s | --scenes) scenedir=$val ;;
+		-e | --expected) expdir=$val ;;
+		-p | --povray) povdir=$val ;;
+		-n | --name) names="$names $val" ;;
+		esac ;;
+	-j*) jobs=${arg#-j} ;;
+	--jobs=*) jobs=${arg#*=} ;;
+	--output=*) report=${arg#*=} ;;
 	--no-report) report="" ;;
-	-s | --scenes) [ $# -ge 2 ] || die "$1 needs a folder"; scenedir=$2; shift ;;
-	--scenes=*) scenedir=${1#*=} ;;
-	-e | --expected) [ $# -ge 2 ] || die "$1 needs a folder"; expdir=$2; shift ;;
-	--expected=*) expdir=${1#*=} ;;
-	-p | --povray) [ $# -ge 2 ] || die "$1 needs a folder"; povdir=$2; shift ;;
-	--povray=*) povdir=${1#*=} ;;
-	-n | --name) [ $# -ge 2 ] || die "$1 needs a pattern"; names="$names $2"; shift ;;
-	--name=*) names="$names ${1#*=}" ;;
+	--scenes=*) scenedir=${arg#*=} ;;
+	--expected=*) expdir=${arg#*=} ;;
+	--povray=*) povdir=${arg#*=} ;;
+	--name=*) names="$names ${arg#*=}" ;;
 	-q | --quiet) quiet=1 ;;
 	--refresh) refresh=all ;;
 	--refresh=*)
-		refresh=${1#*=}
+		refresh=${arg#*=}
 		case $refresh in all | lucent | povray | times) ;;
 		*) die "--refresh=$refresh: expected all, lucent, povray or times" ;;
 		esac ;;
 	-h | --help) usage; exit 0 ;;
-	--) shift; break ;;
-	-*) die "unknown option '$1' (see lucent-regress --help)" ;;
-	*) break ;;
+	--)
+		while [ "$n" -gt 0 ]; do
+			set -- "$@" "$1"
+			shift
+			n=$((n - 1))
+		done ;;
+	-?*) die "unknown option '$arg' (see lucent-regress --help)" ;;
+	*) set -- "$@" "$arg" ;;
 	esac
-	shift
 done
 case $jobs in
 '') jobs=$(nproc 2> /dev/null || getconf _NPROCESSORS_ONLN 2> /dev/null || echo 1) ;;
@@ -569,7 +586,21 @@ PSNR in dB. Times are CPU seconds (user + system) and wall-clock seconds of the 
 run of each renderer (parsing, rendering and writing the image) with one thread; lucent's
 was measured in this run, POV-Ray's when its reference was rendered (lucent-regress
 --refresh). Wall-clock times depend on how busy the machine was.</p>
+<table>
+<tr><th>scene</th><th>result</th><th>vs expected: max</th><th>vs POV-Ray: RMS</th><th>max</th><th>pixels over</th><th>PSNR (dB)</th><th>lucent CPU (s)</th><th>POV-Ray CPU (s)</th></tr>
 EOF
+		# The index: one row per scene, linking to its section.
+		while read -r class f; do
+			load "$f"
+			[ "$class" -eq 0 ] && st=PASS || st=FAIL
+			case $e_verdict in
+			SAME) emax=0 ;;
+			'') emax="" ;;
+			*) emax=$e_max ;;
+			esac
+			echo "<tr><td><a href=\"#$name\">$name</a></td><td class=\"$st\">$st</td><td>$emax</td><td>$p_rms</td><td>$p_max</td><td>${p_n1:+$(over p | esc)}</td><td>$p_psnr</td><td>$ltime</td><td>$ptime</td></tr>"
+		done < "$tmp/report.order"
+		echo "</table>"
 		while read -r class f; do
 			load "$f"
 			[ "$class" -eq 0 ] && st=PASS || st=FAIL
