@@ -121,8 +121,31 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, un
 	fputs(any ? " (the scene cannot show them)\n" : " (none)\n", out);
 }
 
+/* lucent --regress ARGS: run lucent-regress ARGS (doc/regress.md), the
+ * script installed beside lucent, with LUCENT naming this program: from
+ * argv[0]'s folder when it has one, else through PATH. Returns only on
+ * failure. */
+static int run_regress(char **argv)
+{
+	static char path[4096];
+	const char *slash = strrchr(argv[0], '/');
+	if (slash) {
+		snprintf(path, sizeof path, "%.*s/lucent-regress", (int)(slash - argv[0]), argv[0]);
+		setenv("LUCENT", argv[0], 1);
+	} else {
+		snprintf(path, sizeof path, "lucent-regress");
+	}
+	argv[1] = path;
+	execvp(path, argv + 1);
+	fprintf(stderr, "lucent: error: cannot run %s: %s\n", path, strerror(errno));
+	return 1;
+}
+
 int main(int argc, char **argv)
 {
+	if (argc > 1 && strcmp(argv[1], "--regress") == 0)
+		return run_regress(argv);
+
 	struct options opt;
 	options_init(&opt);
 	int status = 1;

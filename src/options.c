@@ -77,6 +77,7 @@ void options_usage(FILE *out)
 "  --signature    flat colour per object, no lighting (checks intersection)\n"
 "  --threads N    as +WTN\n"
 "  --output FILE  as +OFILE\n"
+"  --regress ARGS run lucent-regress ARGS: render and check a scene corpus\n"
 "  -h, --help     show this help\n"
 "  --version      show the version\n"
 "\n"

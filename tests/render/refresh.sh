@@ -1,16 +1,23 @@
 #!/bin/sh
 # tests/render/refresh.sh: regenerate the reference images of the render
 # tests, for every scene in tests/render/*.list (or only the scenes
-# named on the command line):
+# named on the command line; shell patterns such as 'light-*' work too):
 #   tests/render/povray/NAME.png    POV-Ray 3.7's render of scenes/NAME.pov
+#   tests/render/povray/NAME.time   POV-Ray's CPU and wall-clock time for it
 #   tests/render/expected/NAME.png  lucent's render, which run.sh must then
 #                                   reproduce exactly
-# It works from any folder (make refresh-references runs it). Run it after
-# any deliberate change to rendering, then look at the new images and at
-# run.sh's figures against POV-Ray before committing them.
+# It runs lucent-regress --refresh (tools/lucent-regress.sh), several
+# renders at once. It works from any folder (make refresh-references runs
+# it). Run it after any deliberate change to rendering, then look at the
+# new images and at run.sh's figures against POV-Ray before committing them.
 #
+# Usage: refresh.sh [--lucent | --povray | --times] [NAME]...
+#   --lucent  only lucent's expected images (POV-Ray's are left as they are)
+#   --povray  only POV-Ray's images and times
+#   --times   only POV-Ray's times (its images are left as they are)
 # Environment: LUCENT (default ./lucent), POVRAY (default povray),
-# LUCENT_STDLIB (default the source tree's stdlib/).
+# LUCENT_STDLIB (default the source tree's stdlib/), REGRESS_JOBS (renders
+# at once, default the number of cores).
 top=$(cd "$(dirname "$0")/../.." && pwd) || exit 1
 LUCENT=${LUCENT:-./lucent}
 # A path relative to where we were started, made absolute before the cd.
@@ -18,62 +25,20 @@ case $LUCENT in
 /*) ;;
 */*) LUCENT=$PWD/$LUCENT ;;
 esac
-POVRAY=${POVRAY:-povray}
-LUCENT_STDLIB=${LUCENT_STDLIB:-$top/stdlib}
-export LUCENT_STDLIB
+export LUCENT
+export LUCENT_STDLIB="${LUCENT_STDLIB:-$top/stdlib}"
+what=all
+case $1 in
+--lucent | --povray | --times) what=${1#--}; shift ;;
+esac
 cd "$top" || exit 1
 
-log=$(mktemp "${TMPDIR:-/tmp}/lucent-refresh.XXXXXX") || exit 1
-list=$log.list
-trap 'rm -f "$log" "$list"' EXIT
-cat tests/render/*.list > "$list" || exit 1
-mkdir -p tests/render/povray tests/render/expected
-
-# wanted NAME: is the scene selected by the command line (all if none)?
-wanted() {
-	[ $# -eq 1 ] && return 0
-	n=$1
+# Each NAME becomes "-n NAME".
+n=$#
+while [ "$n" -gt 0 ]; do
+	set -- "$@" -n "$1"
 	shift
-	for a in "$@"; do
-		[ "$a" = "$n" ] && return 0
-	done
-	return 1
-}
-
-status=0
-count=0
-while read -r name w h opts; do
-	case $name in '' | '#'*) continue ;; esac
-	sw=""
-	case $opts in *'|'*) sw=${opts#*|} ;; esac
-	wanted "$name" "$@" || continue
-	count=$((count + 1))
-	scene=scenes/$name.pov
-	if [ ! -f "$scene" ]; then
-		echo "$name: no $scene" >&2
-		status=1
-		continue
-	fi
-	# shellcheck disable=SC2086 # the switches are meant to be split
-	if ! "$POVRAY" -D -V +W"$w" +H"$h" $sw +I"$scene" +Otests/render/povray/"$name".png \
-			< /dev/null > "$log" 2>&1; then
-		echo "$name: povray failed:" >&2
-		sed 's/^/  /' "$log" >&2
-		status=1
-	fi
-	# shellcheck disable=SC2086
-	if ! "$LUCENT" -q +W"$w" +H"$h" $sw "$scene" +Otests/render/expected/"$name".png \
-			< /dev/null > "$log" 2>&1; then
-		echo "$name: lucent failed:" >&2
-		sed 's/^/  /' "$log" >&2
-		status=1
-	elif [ -s "$log" ]; then
-		sed "s/^/$name: /" "$log"
-	fi
-	echo "$name: ${w}x$h done"
-done < "$list"
-if [ "$count" -eq 0 ]; then
-	echo "no scene selected from $list" >&2
-	exit 1
-fi
-exit $status
+	n=$((n - 1))
+done
+exec sh tools/lucent-regress.sh --refresh="$what" ${REGRESS_JOBS:+-j "$REGRESS_JOBS"} \
+	--scenes scenes "$@" tests/render
