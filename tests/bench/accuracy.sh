@@ -5,10 +5,10 @@
 # method, threshold, depth and jitter; area-light grid, adaptive level and
 # jitter; focal blur samples, variance and confidence; max_trace_level;
 # quality level), measures
-#   time:  the renderer's own render-phase time (lucent's "render"
-#          statistic, POV-Ray's "Trace Time"; wall clock, one render thread
-#          +WT1 for both), the least of up to ACC_REPEATS runs for renders
-#          that take under half a second;
+#   time:  CPU seconds (user + system) of the render, one render thread
+#          (+WT1) for both: the whole command's less that of the same
+#          command at 1x1 pixels, the least of ACC_REPEATS runs for renders
+#          under a second (see timed below);
 #   error: RMS and largest difference over every pixel and channel, in
 #          linear float (OpenEXR output, +FE), against the same renderer's
 #          converged reference (the sweep's "reference" line),
@@ -69,13 +69,16 @@ LUCENT_DESC="built from commit ${ACC_LUCENT_COMMIT:-unknown}"
 POV_DESC=$("$POVRAY" --version 2>&1 | sed -n 's/^\(POV-Ray [0-9][^ ]*\).*/\1/p' | head -n1)
 started=$(date -u '+%Y-%m-%d %H:%M UTC')
 
-# render_lucent SCENE SWITCHES IMG: prints the render seconds, or fails
-# leaving lucent's first error line in $out/why.
+# render_lucent SCENE SWITCHES IMG WxH: renders (IMG "-": no file written)
+# and prints the CPU seconds it took (cputime.py), or fails leaving lucent's
+# first error line in $out/why.
+CPUTIME="/usr/bin/python3 $top_srcdir/tests/bench/accuracy/cputime.py"
 render_lucent() {
+	if [ "$3" = - ]; then o=-F; else o=+O$3; fi
 	# shellcheck disable=SC2086
-	"$LUCENT" +I"$1" +O"$3" +W"$W" +H"$H" +WT1 $2 > "$out/log" 2>&1
+	$CPUTIME "$LUCENT" +I"$1" "$o" +W"${4%x*}" +H"${4#*x}" +WT1 $2 > "$out/log" 2>&1
 	st=$?
-	t=$(sed -n 's/^  render *\([0-9.]*\) s$/\1/p' "$out/log")
+	t=$(sed -n 's/^cputime \([0-9.]*\)$/\1/p' "$out/log")
 	if [ $st -ne 0 ] || [ -z "$t" ]; then
 		grep -m1 'error' "$out/log" > "$out/why" || head -n1 "$out/log" > "$out/why"
 		return 1
@@ -83,30 +86,47 @@ render_lucent() {
 	echo "$t"
 }
 
-# render_povray SCENE SWITCHES IMG: the same for POV-Ray (its Trace Time).
+# render_povray SCENE SWITCHES IMG WxH: the same for POV-Ray.
 render_povray() {
+	if [ "$3" = - ]; then o=-F; else o="+O$3 +FE"; fi
 	# shellcheck disable=SC2086
-	"$POVRAY" +I"$1" +O"$3" +FE +W"$W" +H"$H" -D +WT1 $2 > "$out/log" 2>&1
+	$CPUTIME "$POVRAY" +I"$1" $o +W"${4%x*}" +H"${4#*x}" -D +WT1 $2 > "$out/log" 2>&1
 	st=$?
-	t=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$out/log" | head -n1)
-	if [ $st -ne 0 ] || [ -z "$t" ] || [ ! -s "$3" ]; then
+	t=$(sed -n 's/^cputime \([0-9.]*\)$/\1/p' "$out/log")
+	if [ $st -ne 0 ] || [ -z "$t" ] || { [ "$3" != - ] && [ ! -s "$3" ]; }; then
 		grep -m1 -i 'error\|problem' "$out/log" > "$out/why" || tail -n1 "$out/log" > "$out/why"
 		return 1
 	fi
 	echo "$t"
 }
 
-# timed RENDERER SCENE SWITCHES IMG: the least time of up to REPEATS runs
-# (repeating only while a run takes under half a second).
-timed() {
-	best=$(render_"$1" "$2" "$3" "$4") || return 1
-	n=1
-	while [ "$n" -lt "$REPEATS" ] && awk -v t="$best" 'BEGIN { exit !(t < 0.5) }'; do
-		t=$(render_"$1" "$2" "$3" "$4") || return 1
+# least N RENDERER SCENE SWITCHES IMG WxH: the least CPU time of N runs.
+least() {
+	k=$1; shift
+	best=$(render_"$1" "$2" "$3" "$4" "$5") || return 1
+	while [ "$k" -gt 1 ]; do
+		t=$(render_"$1" "$2" "$3" "$4" "$5") || return 1
 		best=$(awk -v a="$best" -v b="$t" 'BEGIN { print (b < a ? b : a) }')
-		n=$((n + 1))
+		k=$((k - 1))
 	done
 	echo "$best"
+}
+
+# timed RENDERER SCENE SWITCHES IMG: renders IMG and prints the CPU time of
+# the render alone: the whole command's less that of the same command at
+# 1x1 pixels (start-up, parsing, preparing, writing the file). A render
+# that takes over a second is timed by its IMG run; a shorter one by the
+# least of REPEATS runs writing no file, less the least of REPEATS such
+# runs at 1x1.
+timed() {
+	whole=$(render_"$1" "$2" "$3" "$4" "${W}x$H") || return 1
+	if awk -v t="$whole" 'BEGIN { exit !(t > 1) }'; then
+		base=$(least 2 "$1" "$2" "$3" "$out/base.exr" 1x1) || return 1
+	else
+		whole=$(least "$REPEATS" "$1" "$2" "$3" - "${W}x$H") || return 1
+		base=$(least "$REPEATS" "$1" "$2" "$3" - 1x1) || return 1
+	fi
+	awk -v a="$whole" -v b="$base" 'BEGIN { d = a - b; printf "%.3f\n", (d > 0.001 ? d : 0.001) }'
 }
 
 printf 'accuracy: %dx%d, one render thread each, %s CPUs, load average %s\n' "$W" "$H" \
@@ -230,13 +250,13 @@ if command -v gnuplot > /dev/null 2>&1; then
 		gnuplot <<-EOF
 			set terminal $term
 			set output '$IMGDIR/$s.png'
-			set title 'acc-$s.pov at ${W}x${H}: error against render time (one thread)'
+			set title 'acc-$s.pov at ${W}x${H}: error against render CPU time (one thread)'
 			set logscale xy
 			set format x '%g'
 			set format y '%g'
 			set grid
 			set key top right
-			set xlabel 'render time (s)'
+			set xlabel 'render CPU time (s)'
 			set ylabel 'RMS error against the converged reference (linear)'
 			plot $plots
 		EOF
@@ -257,10 +277,13 @@ fi
 
 	- Image ${W}x${H}, one render thread for each renderer (\`+WT1\`), the same
 	  switches for both (\`Declare=\` switches set the scene's own settings).
-	- **Time**: each renderer's own render-phase time (lucent's \`render\`
-	  statistic, POV-Ray's \`Trace Time\`): wall clock, parsing and start-up left
-	  out, which are the same whatever the setting. Renders under half a second
-	  are repeated (up to $REPEATS runs) and the least time kept.
+	- **Time**: CPU seconds (user + system, as the kernel accounts them to the
+	  process and its threads) of the render alone: the whole command's less
+	  that of the same command at 1x1 pixels, which leaves out start-up,
+	  parsing, preparing and writing the file (the same whatever the setting).
+	  CPU time rather than wall clock, so that other jobs on a shared machine
+	  disturb the figures less. Renders under a second are timed as the least
+	  of $REPEATS runs (and so is their 1x1 run).
 	- **Error**: RMS and largest absolute difference over every pixel and
 	  channel, in linear float (OpenEXR output, \`+FE\`; POV-Ray writes half
 	  floats, about 3 significant digits), computed by OpenImageIO's idiff,
@@ -275,8 +298,10 @@ fi
 	if awk -v l="$load_start" -v m="$load_end" 'BEGIN { split(l, a, " "); split(m, b, " "); exit !(a[1] > 1 || b[1] > 1) }'; then
 		cat <<-EOF
 		  **These figures are from a loaded machine** (other jobs were running), so
-		  single times can be off by a factor of two or more; both renderers ran
-		  in turn under the same load. Re-run on an idle machine for firm figures.
+		  CPU times suffer less from it than wall-clock times, but sharing the
+		  caches still inflates them, and times under about 0.05 s are noisy; both
+		  renderers ran in turn under the same load. Re-run on an idle machine for
+		  firm figures.
 		EOF
 	fi
 	cat <<-EOF
@@ -305,7 +330,7 @@ fi
 	what the scene's errors span; linear units, 0.005 is about 1/255 of the
 	display range in the mid-tones). "-" means no measured setting got there.
 
-	| scene | use (RMS target) | lucent: setting | time (s) | POV-Ray: setting | time (s) |
+	| scene | use (RMS target) | lucent: setting | CPU (s) | POV-Ray: setting | CPU (s) |
 	|---|---|---|---|---|---|
 	EOF
 	for s in $scenes; do
@@ -326,7 +351,7 @@ fi
 		echo
 		sed -n '1,/^#version/p' "$top_srcdir/scenes/acc-$s.pov" | grep '^//' | sed 's|^// \{0,1\}||'
 		echo
-		echo "| setting | switches | lucent time (s) | lucent RMS | lucent max | POV-Ray time (s) | POV-Ray RMS | POV-Ray max |"
+		echo "| setting | switches | lucent CPU (s) | lucent RMS | lucent max | POV-Ray CPU (s) | POV-Ray RMS | POV-Ray max |"
 		echo "|---|---|---|---|---|---|---|---|"
 		awk -F'\t' -v s="$s" '$1 == s { printf "| %s | `%s` | %s | %s | %s | %s | %s | %s |\n", $2, $3, $4, $5, $6, $7, $8, $9 }' "$data"
 		awk -F'\t' -v s="$s" '$1 == s && $10 != "" { printf "\nlucent failed on \"%s\": `%s`\n", $2, $10 }
