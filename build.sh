@@ -8,9 +8,10 @@ set -e
 cd "$(dirname "$0")"
 
 # Build tools and libraries; POV-Ray and its includes are the references the
-# tests and the cross-check scripts compare against.
+# tests and the cross-check scripts compare against; gnuplot draws the
+# plots of make accuracy.
 PACKAGES="build-essential autoconf automake pkg-config gperf libopenimageio-dev \
-openimageio-tools libcmocka-dev povray povray-includes python3-numpy"
+openimageio-tools libcmocka-dev povray povray-includes python3-numpy gnuplot-nox"
 
 missing=""
 for p in $PACKAGES; do
