@@ -3,7 +3,8 @@
 # what lucent needs (as root, or through sudo), then bootstraps, configures,
 # builds, and renders scenes/showcase.pov to showcase.png.
 #   ./build.sh                 everything
-#   CONFIGURE_FLAGS=... ./build.sh   extra ./configure flags (CI: --enable-werror)
+#   CONFIGURE_FLAGS=... ./build.sh   extra ./configure flags (CI: --enable-werror;
+#                                    fuzzing: "--enable-fuzz CC=clang CXX=clang++")
 set -e
 cd "$(dirname "$0")"
 
@@ -12,6 +13,11 @@ cd "$(dirname "$0")"
 # plots of make accuracy.
 PACKAGES="build-essential autoconf automake pkg-config gperf libopenimageio-dev \
 openimageio-tools libcmocka-dev povray povray-includes python3-numpy gnuplot-nox"
+# The fuzz harnesses (CONFIGURE_FLAGS="--enable-fuzz CC=clang CXX=clang++",
+# then make fuzz) need clang and its libFuzzer.
+case " $CONFIGURE_FLAGS " in
+*" --enable-fuzz "*) PACKAGES="$PACKAGES clang" ;;
+esac
 
 missing=""
 for p in $PACKAGES; do

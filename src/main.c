@@ -227,11 +227,16 @@ int main(int argc, char **argv)
 		.clock = opt.clock,
 		.debug_out = debug_out,
 		.io_unrestricted = opt.io_unrestricted,
+		.stop = &interrupted,
 	};
 	double t0 = now();
 	int prc = parse_scene(sm, &diag, &po, scene);
 	if (debug_out != stderr)
 		fclose(debug_out);
+	if (prc == 2) {
+		status = 2;
+		goto done;
+	}
 	if (prc != 0)
 		goto done;
 	if (interrupted) {

@@ -417,6 +417,8 @@ struct value builtin_call(struct parser *p)
 		size_t cap = 256, len = 0;
 		char *buf = malloc(cap);
 		if (!buf) abort();
+		/* Owned by the parse while the arguments are read: one may fail. */
+		int slot = parse_own(p, buf, free);
 		do {
 			const char *s = arg_string(p, name);
 			size_t n = strlen(s);
@@ -425,11 +427,13 @@ struct value builtin_call(struct parser *p)
 					cap *= 2;
 				buf = realloc(buf, cap);
 				if (!buf) abort();
+				p->owned[slot].ptr = buf;
 			}
 			memcpy(buf + len, s, n);
 			len += n;
 		} while (parse_accept(p, TOK_COMMA));
 		r = str_value(p, buf, len, at);
+		parse_release(p, slot);
 		free(buf);
 		break;
 	}

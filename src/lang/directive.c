@@ -529,6 +529,7 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	if (n != m->nparams)
 		parse_error_at(p, name->pos, "macro %s takes %d argument%s, but %d %s given", m->name, m->nparams,
 		               m->nparams == 1 ? "" : "s", n, n == 1 ? "was" : "were");
+	parse_step(p, name->pos, false);
 	const struct srcfile *sf = src_file(p->sm, m->file);
 	parse_release(p, slot);
 	struct frame *mf;
@@ -750,7 +751,13 @@ static char *find_include(struct parser *p, const char *name, uint32_t from_file
 
 char *parse_find_file(struct parser *p, const char *name, uint32_t from_file)
 {
-	return find_include(p, name, from_file);
+	char *path = find_include(p, name, from_file);
+	if (path) {
+		int slot = parse_own(p, path, free);
+		parse_check_access(p, path, name, false, "an image map", p->prev.pos);
+		parse_release(p, slot);
+	}
+	return path;
 }
 
 /* #include STRING */
@@ -762,6 +769,9 @@ static void dir_include(struct parser *p, struct srcpos at)
 	char *path = find_include(p, name, at.file);
 	if (!path)
 		parse_error_at(p, at, "cannot find include file \"%s\" (searched the including file's folder, the current folder, +L paths and the stdlib)", name);
+	int pslot = parse_own(p, path, free);
+	parse_check_access(p, path, name, false, "#include", at);
+	parse_release(p, pslot);
 	/* A file is read once, unless the scene has written some file since
 	 * (it may have been this one: Parse_String of strings.inc). */
 	uint32_t file = src_find(p->sm, path);
@@ -854,6 +864,7 @@ void parse_directive(struct parser *p, size_t hash)
 		char buf[128];
 		parse_error_at(p, kwt.pos, "expected a directive name after '#', found %s", lex_describe(&kwt, buf, sizeof buf));
 	}
+	parse_step(p, at, kwt.kw == KW_WHILE);
 	if (++p->directive_depth > MAX_DIRECTIVE_DEPTH)
 		parse_error_at(p, at, "directives nested inside each other too deeply (more than %d)", MAX_DIRECTIVE_DEPTH);
 	bool outer_defer = p->defer;

@@ -7,6 +7,7 @@
 #include "lang/intern.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,22 +17,97 @@ static void free_file_holder(void *h)
 	free(h);
 }
 
-/* Is name a path #fopen may use? Relative paths inside the scene's
- * folder tree; '..' and absolute paths only when the user allowed it. */
-static void check_path(struct parser *p, const char *name, struct srcpos at, bool writing)
+/* The folder of the scene file, resolved ("." for standard input or a
+ * bare name); malloc'd, or NULL if it cannot be resolved. */
+static char *scene_folder(struct parser *p)
+{
+	const struct srcfile *main_file = src_file(p->sm, p->frames[0].file);
+	const char *path = main_file ? main_file->path : ".";
+	const char *slash = strrchr(path, '/');
+	char dir[PATH_MAX];
+	if (!slash)
+		snprintf(dir, sizeof dir, ".");
+	else if (slash == path)
+		snprintf(dir, sizeof dir, "/");
+	else
+		snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
+	return realpath(dir, NULL);
+}
+
+/* Is the resolved path inside the folder root (resolved too)? */
+static bool inside(const char *path, const char *root)
+{
+	if (!root)
+		return false;
+	size_t n = strlen(root);
+	if (n == 1 && root[0] == '/')
+		return true;
+	return strncmp(path, root, n) == 0 && (path[n] == '/' || path[n] == 0);
+}
+
+static bool inside_folder(const char *path, const char *folder)
+{
+	if (!folder)
+		return false;
+	char *root = realpath(folder, NULL);
+	bool in = inside(path, root);
+	free(root);
+	return in;
+}
+
+/* path, resolved: symbolic links and '..' followed. A file that does not
+ * exist yet (one to write) resolves through its folder. malloc'd, or NULL. */
+static char *resolve(const char *path)
+{
+	char *r = realpath(path, NULL);
+	if (r || errno != ENOENT)
+		return r;
+	const char *slash = strrchr(path, '/');
+	char dir[PATH_MAX];
+	snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + (slash == path) : 1, slash ? path : ".");
+	char *d = realpath(dir, NULL);
+	if (!d)
+		return NULL;
+	const char *base = slash ? slash + 1 : path;
+	if (strcmp(base, "..") == 0 || strcmp(base, ".") == 0 || !*base) {
+		free(d);
+		return NULL;
+	}
+	char *out = malloc(strlen(d) + strlen(base) + 2);
+	if (!out) abort();
+	sprintf(out, "%s%s%s", d, strcmp(d, "/") == 0 ? "" : "/", base);
+	free(d);
+	return out;
+}
+
+void parse_check_access(struct parser *p, const char *path, const char *name, bool writing, const char *what,
+                        struct srcpos at)
 {
 	if (p->o->io_unrestricted)
 		return;
-	bool bad = name[0] == '/';
-	for (const char *s = name; !bad && (s = strstr(s, "..")) != NULL; s += 2) {
-		bool start = s == name || s[-1] == '/';
-		bool end = s[2] == 0 || s[2] == '/';
-		if (start && end)
-			bad = true;
+	/* A path that does not resolve (a missing folder) is left to fail
+	 * when it is opened: nothing can be read or written there. */
+	char *r = resolve(path);
+	bool ok = r == NULL;
+	if (r) {
+		char *scene = scene_folder(p);
+		ok = inside(r, scene);
+		free(scene);
+		if (!ok && !writing) {
+			for (size_t i = 0; !ok && i < p->o->nlib_paths; i++)
+				ok = inside_folder(r, p->o->lib_paths[i]);
+			if (!ok && p->o->stdlib_dir)
+				ok = inside_folder(r, p->o->stdlib_dir);
+		}
+		free(r);
 	}
-	if (bad)
-		parse_error_at(p, at, "#fopen may not %s \"%s\": scene files can only reach their own folder "
-		               "(lucent --io-unrestricted lifts this)", writing ? "write" : "read", name);
+	if (ok)
+		return;
+	if (writing)
+		parse_error_at(p, at, "%s may not write \"%s\": scene files can only write in their own folder "
+		               "(lucent --io-unrestricted lifts this)", what, name);
+	parse_error_at(p, at, "%s may not read \"%s\": scene files can only read their own folder, "
+	               "the +L library paths and the stdlib (lucent --io-unrestricted lifts this)", what, name);
 }
 
 /* The path of a file named in the scene: beside the scene file. */
@@ -67,8 +143,10 @@ void parse_fopen(struct parser *p, struct srcpos at)
 		writing = append = true;
 	else
 		parse_expected(p, "read, write or append");
-	check_path(p, name, at, writing);
 	char *path = scene_relative(p, name);
+	int pslot = parse_own(p, path, free);
+	parse_check_access(p, path, name, writing, "#fopen", at);
+	parse_release(p, pslot);
 	struct value *h = calloc(1, sizeof *h);
 	if (!h) abort();
 	h->kind = VAL_FILE;

@@ -32,6 +32,36 @@ void parse_error(struct parser *p, const char *fmt, ...)
 	longjmp(*p->boundary, 1);
 }
 
+void parse_step(struct parser *p, struct srcpos pos, bool loop_head)
+{
+	p->steps++;
+	if (p->o->stop && *p->o->stop) {
+		p->interrupted = true;
+		/* The innermost loop: the #while at pos itself (a loop's #end
+		 * closes it before its #while runs again), else the innermost
+		 * one open. */
+		struct srcpos lpos = pos;
+		const char *kind = "while";
+		bool found = loop_head;
+		for (int i = p->nconds - 1; i >= 0 && !found; i--)
+			if (p->conds[i].kind == COND_WHILE || p->conds[i].kind == COND_FOR) {
+				lpos = p->conds[i].pos;
+				kind = p->conds[i].kind == COND_WHILE ? "while" : "for";
+				found = true;
+			}
+		const struct srcfile *lf = found ? src_file(p->sm, lpos.file) : NULL;
+		if (lf)
+			diag_report(p->d, DIAG_ERROR, pos, "interrupted while parsing, in the #%s loop at %s:%u", kind,
+			            lf->path, lpos.line);
+		else
+			diag_report(p->d, DIAG_ERROR, pos, "interrupted while parsing");
+		longjmp(*p->boundary, 1);
+	}
+	if (p->o->max_steps && p->steps > p->o->max_steps)
+		parse_error_at(p, pos, "the scene ran more than %lu directives and macro calls (the limit set for this run)",
+		               p->o->max_steps);
+}
+
 void parse_expected(struct parser *p, const char *what)
 {
 	char buf[128];
@@ -582,7 +612,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 		while (parse_peek(p)->kind != TOK_EOF)
 			parse_statement(p);
 	} else {
-		rc = 1;
+		rc = p->interrupted ? 2 : 1;
 	}
 	parse_debug_flush(p);
 	/* Both paths: free what the parse still owns. */

@@ -8,6 +8,7 @@
 #include "lang/source.h"
 #include "scene/scene.h"
 
+#include <signal.h>
 #include <stdio.h>
 
 struct parse_define {
@@ -26,10 +27,18 @@ struct parse_opts {
 	double clock;
 	FILE *debug_out;                /* where #debug text goes */
 	bool io_unrestricted;           /* #fopen may reach any path */
+	/* Set (by a signal handler) to stop the parse: it stops at the next
+	 * directive or macro call, reports where it was and returns 2. May be
+	 * NULL. */
+	volatile sig_atomic_t *stop;
+	/* If not 0: the most directives and macro calls the parse may run
+	 * before it stops with an error (the fuzz harnesses bound endless
+	 * loops with it). */
+	unsigned long max_steps;
 };
 
 /* Parse o->input into s. Returns 0 on success, 1 after reporting an error
- * through d. All parse-time memory is released on both paths; what the
+ * through d, 2 if stopped through o->stop (reported through d). All parse-time memory is released on both paths; what the
  * scene received belongs to the scene. */
 int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, struct scene *s);
 

@@ -64,6 +64,7 @@ struct parser {
 	int nframes;
 	struct cond conds[MAX_CONDS];
 	int nconds;
+	bool interrupted;            /* stopped through o->stop */
 	bool defer;                  /* reading a directive's operands (see
 	                              * parse_peek_cont) */
 	struct token cur;            /* the lookahead token, valid if have_cur */
@@ -91,6 +92,7 @@ struct parser {
 	int nowned;
 	struct texture *default_tex; /* #default { texture }: one reference */
 	struct exprcache *xcache;    /* compiled float expressions (exprcache.h) */
+	unsigned long steps;         /* directives run and macros called (parse_step) */
 	unsigned long events;        /* directives run and frames entered or left */
 	unsigned long bindgen;       /* bumped when any binding is added or removed or a
 	                              * frame is entered or left: pointers to bindings
@@ -110,6 +112,10 @@ struct parser {
 _Noreturn void parse_error_at(struct parser *p, struct srcpos pos, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 _Noreturn void parse_error(struct parser *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Count one step (a directive or a macro call at pos; loop_head: the
+ * directive is a #while) against o->max_steps, and stop if o->stop is
+ * set: "interrupted" with the innermost loop, and the parse returns 2. */
+void parse_step(struct parser *p, struct srcpos pos, bool loop_head);
 /* "expected X, found Y" at the current token. */
 _Noreturn void parse_expected(struct parser *p, const char *what);
 void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -289,6 +295,13 @@ void parse_debug_flush(struct parser *p);
 /* #default { ... } (texture_parse.c). */
 void parse_default(struct parser *p);
 
+/* The file rule (fileio.c): a scene may read files in its own folder,
+ * the +L paths and the stdlib, and write only in its
+ * own folder, unless o->io_unrestricted. path is the file as found
+ * (resolved here: links and '..' followed), name as the scene wrote it,
+ * what the directive or item ("#include"); an error at `at` otherwise. */
+void parse_check_access(struct parser *p, const char *path, const char *name, bool writing, const char *what,
+                        struct srcpos at);
 /* File directives (fileio.c); the current token follows the keyword. */
 void parse_fopen(struct parser *p, struct srcpos at);
 void parse_fclose(struct parser *p);

@@ -1,2 +1,2 @@
-// expect: 2:1: #fopen may not write "../outside.txt": scene files can only reach their own folder (lucent --io-unrestricted lifts this)
+// expect: 2:1: #fopen may not write "../outside.txt": scene files can only write in their own folder (lucent --io-unrestricted lifts this)
 #fopen F "../outside.txt" write

@@ -22,7 +22,9 @@ for scene in *.pov; do
 	loc=${expect%%: *}
 	msg=${expect#*: }
 	out="$WORK/${scene%.pov}.png"
-	"$LUCENT" -q +W8 +H6 "$scene" +O"$out" > "$WORK/err.txt" 2>&1
+	# +L: the image tests read tests/data (outside this folder) under the
+	# file rule.
+	"$LUCENT" -q +W8 +H6 +L"$top_srcdir/tests/data" "$scene" +O"$out" > "$WORK/err.txt" 2>&1
 	rc=$?
 	ok=1
 	why=""

@@ -1,0 +1,116 @@
+/* fuzz_common.h: the body shared by the libFuzzer harnesses (fuzz_parse.c,
+ * fuzz_render.c). Each input is a scene file: it is written to a private
+ * temporary folder (the process works there, so every file the scene
+ * reads or writes stays inside it under lucent's file rule), parsed with
+ * a bound on the directives it may run (an endless #while is the user's to
+ * stop, not a bug), and, when FUZZ_RENDER is 1, prepared and rendered to a
+ * tiny image that is never written out. */
+#include "image/framebuffer.h"
+#include "lang/diag.h"
+#include "lang/parse.h"
+#include "lang/source.h"
+#include "render/prepare.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+#include <dirent.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#ifndef FUZZ_STDLIB
+#define FUZZ_STDLIB "stdlib"
+#endif
+
+enum { FUZZ_MAX_STEPS = 20000, FUZZ_W = 8, FUZZ_H = 6 };
+
+static char fuzz_dir[64], fuzz_scene[96];
+static FILE *fuzz_null;
+
+/* Remove what the last input left in the folder (files it wrote). */
+static void fuzz_clean(void)
+{
+	DIR *d = opendir(fuzz_dir);
+	if (!d)
+		return;
+	struct dirent *e;
+	char path[512];
+	while ((e = readdir(d)) != NULL)
+		if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0) {
+			snprintf(path, sizeof path, "%s/%s", fuzz_dir, e->d_name);
+			unlink(path);
+		}
+	closedir(d);
+}
+
+static void fuzz_cleanup_dir(void)
+{
+	fuzz_clean();
+	rmdir(fuzz_dir);
+}
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+	(void)argc;
+	(void)argv;
+	snprintf(fuzz_dir, sizeof fuzz_dir, "/tmp/lucent-fuzz-XXXXXX");
+	if (!mkdtemp(fuzz_dir)) {
+		perror("lucent fuzz: temporary folder");
+		abort();
+	}
+	snprintf(fuzz_scene, sizeof fuzz_scene, "%s/scene.pov", fuzz_dir);
+	atexit(fuzz_cleanup_dir);
+	fuzz_null = fopen("/dev/null", "w");
+	if (!fuzz_null)
+		abort();
+	return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+	fuzz_clean();
+	FILE *f = fopen(fuzz_scene, "wb");
+	if (!f)
+		abort();
+	if (size && fwrite(data, 1, size, f) != size)
+		abort();
+	fclose(f);
+
+	struct srcmgr *sm = src_new();
+	struct diag diag;
+	diag_init(&diag, sm, fuzz_null);
+	struct scene *scene = scene_new();
+	struct parse_opts po = {
+		.input = fuzz_scene,
+		.stdlib_dir = FUZZ_STDLIB,
+		.image_width = FUZZ_W,
+		.image_height = FUZZ_H,
+		.debug_out = fuzz_null,
+		.max_steps = FUZZ_MAX_STEPS,
+	};
+	int rc = parse_scene(sm, &diag, &po, scene);
+	if (FUZZ_RENDER && rc == 0) {
+		struct prepared *prep = prepare_scene(scene);
+		prepare_quality(prep, 9);
+		struct framebuffer *fb = fb_new(FUZZ_W, FUZZ_H);
+		struct render_opts ro = {
+			.width = FUZZ_W, .height = FUZZ_H,
+			.row0 = 0, .row1 = FUZZ_H, .col0 = 0, .col1 = FUZZ_W,
+			.threads = 1,
+			.aa_method = 1, .aa_threshold = 0.3, .aa_depth = 2,
+			.aa_exponent = 1,
+		};
+		struct stats st;
+		memset(&st, 0, sizeof st);
+		render_image(prep, &ro, fb, &st);
+		fb_free(fb);
+		prepared_free(prep);
+	}
+	scene_free(scene);
+	src_free(sm);
+	return 0;
+}

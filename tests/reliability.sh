@@ -1,0 +1,117 @@
+#!/bin/sh
+# tests/reliability.sh: bad or hostile scenes within bounds (issue 9;
+# doc/reliability.md): Ctrl-C while parsing an endless loop, the file rule
+# for #include, #fopen and image maps (what is allowed, and the switches
+# that widen it), and output images that survive a render stopped at
+# random points. The refusals are in tests/errors/fuzz-*.pov.
+. "${top_srcdir:-.}/tests/lib.sh"
+cd "$WORK" || exit 1
+
+# ---- Ctrl-C while parsing ----
+cat > loop.pov <<'POV'
+#declare I = 0;
+#while (1)
+  #declare I = I + 1;
+#end
+POV
+"$LUCENT" -q +W8 +H6 loop.pov +Oloop.png > err.txt 2>&1 &
+pid=$!
+sleep 0.5
+kill -INT $pid
+wait $pid
+rc=$?
+check "Ctrl-C in an endless #while exits with status 2" [ $rc -eq 2 ]
+check "Ctrl-C names the loop and where it was" grep -qE '^loop\.pov:[234]:[0-9]+: error: interrupted while parsing, in the #while loop at loop\.pov:2$' err.txt
+check "Ctrl-C while parsing writes no image" [ ! -f loop.png ]
+
+cat > forloop.pov <<'POV'
+#macro Work(X) #local Y = X * 2; #end
+#for (I, 0, 1e12)
+  Work(I)
+#end
+POV
+"$LUCENT" -q +W8 +H6 forloop.pov +Oforloop.png > err.txt 2>&1 &
+pid=$!
+sleep 0.5
+kill -TERM $pid
+wait $pid
+rc=$?
+check "SIGTERM in a #for with macro calls exits with status 2" [ $rc -eq 2 ]
+check "the message names the #for loop" grep -qE '^forloop\.pov:[0-9]+:[0-9]+: error: interrupted while parsing, in the #for loop at forloop\.pov:2$' err.txt
+
+# ---- the file rule: what is allowed ----
+mkdir -p scene/sub lib
+echo '#declare FromSub = 1;' > scene/sub/a.inc
+echo '#declare FromLib = 2;' > lib/b.inc
+cat > scene/ok.pov <<'POV'
+#include "sub/a.inc"
+#include "sub/../sub/a.inc"
+#fopen Out "sub/written.txt" write
+#write (Out, "3,\n")
+#fclose Out
+#fopen In "sub/written.txt" read
+#read (In, V)
+#if (FromSub != 1 | V != 3) #error "wrong values" #end
+POV
+"$LUCENT" -q +W8 +H6 -F scene/ok.pov > err.txt 2>&1
+check "the scene's folder and its subfolders can be read and written" [ $? -eq 0 ]
+printf '#include "../lib/b.inc"\n#if (FromLib != 2) #error "wrong" #end\n' > scene/lib.pov
+"$LUCENT" -q +W8 +H6 -F scene/lib.pov > err.txt 2>&1
+check "a file outside the scene's folder is refused" contains err.txt 'may not read "../lib/b.inc"'
+"$LUCENT" -q +W8 +H6 -F +L"$WORK/lib" scene/lib.pov > err.txt 2>&1
+check "+L makes a folder readable" [ $? -eq 0 ]
+printf '#include "b.inc"\n' > scene/libsearch.pov
+"$LUCENT" -q +W8 +H6 -F +Llib scene/libsearch.pov > err.txt 2>&1
+check "a file found through a relative +L path is readable" [ $? -eq 0 ]
+"$LUCENT" -q +W8 +H6 -F --io-unrestricted scene/lib.pov > err.txt 2>&1
+check "--io-unrestricted lifts the rule for reading" [ $? -eq 0 ]
+printf '#fopen O "../lib/out.txt" write\n#write (O, "1")\n#fclose O\n' > scene/wr.pov
+"$LUCENT" -q +W8 +H6 -F +L"$WORK/lib" scene/wr.pov > err.txt 2>&1
+check "+L does not make a folder writable" contains err.txt 'may not write "../lib/out.txt"'
+check "... and nothing was written" [ ! -f lib/out.txt ]
+"$LUCENT" -q +W8 +H6 -F --io-unrestricted scene/wr.pov > err.txt 2>&1
+check "--io-unrestricted lifts the rule for writing" [ -f lib/out.txt ]
+ln -s "$WORK/lib/b.inc" scene/link.inc
+printf '#include "link.inc"\n' > scene/link.pov
+"$LUCENT" -q +W8 +H6 -F scene/link.pov > err.txt 2>&1
+check "a symbolic link out of the scene's folder is refused" contains err.txt 'may not read "link.inc"'
+printf '#include "colors.inc"\n#declare C = Red;\n' > scene/std.pov
+"$LUCENT" -q +W8 +H6 -F scene/std.pov > err.txt 2>&1
+check "the stdlib is readable" [ $? -eq 0 ]
+
+# ---- output: a stopped render leaves the previous image intact ----
+cat > slow.pov <<'POV'
+#version 3.7;
+camera { location <0, 1, -4> look_at 0 }
+light_source { <2, 4, -3> color rgb 1 }
+#for (I, 0, 40)
+  sphere { <mod(I, 7) - 3, div(I, 7) - 2, 0>, 0.45 pigment { granite } finish { reflection 0.3 } }
+#end
+plane { y, -3 pigment { checker } finish { reflection 0.5 } }
+POV
+"$LUCENT" -q +W64 +H48 slow.pov +Oout.png > err.txt 2>&1
+cp out.png before.png
+intact=1
+leftover=0
+for delay in 0.05 0.1 0.2 0.3 0.4 0.6 0.8 1.0 1.3 1.6; do
+	"$LUCENT" -q +W320 +H240 +A0.1 +WT1 slow.pov +Oout.png > err.txt 2>&1 &
+	pid=$!
+	sleep $delay
+	kill -INT $pid 2>/dev/null
+	wait $pid
+	rc=$?
+	# Stopped: the old image; finished before the signal: a new, whole one.
+	if [ $rc -eq 2 ]; then
+		cmp -s out.png before.png || intact=0
+	elif [ $rc -eq 0 ]; then
+		iinfo out.png 2>/dev/null | grep -q "320 x 240" || intact=0
+		cp before.png out.png
+	else
+		intact=0
+	fi
+	ls -a | grep -q '\.tmp' && leftover=1
+done
+check "a render stopped at random points leaves the previous image intact" [ $intact -eq 1 ]
+check "... and no temporary file behind" [ $leftover -eq 0 ]
+
+finish
