@@ -262,8 +262,11 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*pig)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -403,8 +406,11 @@ static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*nrm)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -704,8 +710,11 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*tex)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
