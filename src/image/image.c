@@ -77,7 +77,7 @@ static void expand(const struct oiio_image *o, float *dst, enum transfer tf, dou
 	}
 }
 
-static struct image *build(const char *path, double gamma, int premultiplied, char *err, unsigned errsize)
+static struct image *build(const char *path, double gamma, int premultiplied, double working, char *err, unsigned errsize)
 {
 	struct oiio_image o;
 	if (oiio_read(path, &o, err, errsize) != 0)
@@ -100,6 +100,7 @@ static struct image *build(const char *path, double gamma, int premultiplied, ch
 	img->has_alpha = o.channels == 2 || o.channels == 4;
 	img->gamma = gamma;
 	img->premultiplied = premultiplied;
+	img->working = working;
 	img->palette_size = o.index ? o.palette_size : 0;
 
 	bool associated = premultiplied < 0 ? format_associated(o.format) : premultiplied == 1;
@@ -110,6 +111,12 @@ static struct image *build(const char *path, double gamma, int premultiplied, ch
 	if (tf == TF_POWER && fabs(power - 1) < 1e-12)
 		tf = TF_LINEAR;
 	expand(&o, px, tf, power, associated);
+	if (working != 1)
+		for (size_t i = 0; i < n; i++)
+			for (int k = 0; k < 3; k++) {
+				float *c = &px[i * 4 + k];
+				*c = *c > 0 ? (float)pow(*c, 1 / working) : *c;
+			}
 	img->px = px;
 	/* image_pattern and bump_map read the stored values unless a gamma is
 	 * given (then both decode alike). */
@@ -132,23 +139,42 @@ static struct image *build(const char *path, double gamma, int premultiplied, ch
 	return img;
 }
 
-struct image *image_load_opts(const char *path, double gamma, int premultiplied, char *err, unsigned errsize)
+struct image *image_load_working(const char *path, double gamma, int premultiplied, double working, char *err,
+                                 unsigned errsize)
 {
 	pthread_mutex_lock(&cache_lock);
 	for (struct image *i = cache; i; i = i->next) {
-		if (!strcmp(i->path, path) && i->gamma == gamma && i->premultiplied == premultiplied) {
+		if (!strcmp(i->path, path) && i->gamma == gamma && i->premultiplied == premultiplied &&
+		    i->working == working) {
 			i->refs++;
 			pthread_mutex_unlock(&cache_lock);
 			return i;
 		}
 	}
-	struct image *img = build(path, gamma, premultiplied, err, errsize);
+	struct image *img = build(path, gamma, premultiplied, working, err, errsize);
 	if (img) {
 		img->next = cache;
 		cache = img;
 	}
 	pthread_mutex_unlock(&cache_lock);
 	return img;
+}
+
+struct image *image_load_opts(const char *path, double gamma, int premultiplied, char *err, unsigned errsize)
+{
+	return image_load_working(path, gamma, premultiplied, 1, err, errsize);
+}
+
+bool image_mapping_to_working(struct image_mapping *m, double working, char *err, unsigned errsize)
+{
+	if (!m->img || working == m->img->working)
+		return true;
+	struct image *w = image_load_working(m->img->path, m->img->gamma, m->img->premultiplied, working, err, errsize);
+	if (!w)
+		return false;
+	image_unref(m->img);
+	m->img = w;
+	return true;
 }
 
 struct image *image_load(const char *path, double gamma, char *err, unsigned errsize)

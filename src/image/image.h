@@ -36,6 +36,7 @@ struct image {
 	bool has_alpha;
 	double gamma;                /* the decoding asked for (cache key) */
 	int premultiplied;           /* the alpha handling asked for (cache key) */
+	double working;              /* px's colours are linear^(1/working) (cache key; 1: linear) */
 	struct image *next;          /* the cache's list */
 };
 
@@ -49,6 +50,17 @@ struct image {
  * message into err. */
 struct image *image_load(const char *path, double gamma, char *err, unsigned errsize);
 struct image *image_load_opts(const char *path, double gamma, int premultiplied, char *err, unsigned errsize);
+/* The same with the colours of px carried into a working gamma: the
+ * decoded value v becomes v^(1/working) (working 1: none). */
+struct image *image_load_working(const char *path, double gamma, int premultiplied, double working, char *err,
+                                 unsigned errsize);
+/* image_map's colours in the scene's working gamma: POV-Ray 3.7 brings an
+ * image_map to the assumed_gamma in force where the image is read (measured:
+ * with assumed_gamma 2.2 a pixel decoded to 0.033105 gives 0.212433 =
+ * 0.033105^(1/2.2); image_pattern and bump_map are not affected). Replaces
+ * m->img by its variant for that working gamma (the file is read again
+ * unless the cache has it). false, with a message in err, if that fails. */
+bool image_mapping_to_working(struct image_mapping *m, double working, char *err, unsigned errsize);
 struct image *image_ref(struct image *img);
 void image_unref(struct image *img);
 

@@ -325,12 +325,15 @@ void parse_texture_layer(struct parser *p, struct texture **tex);
  * parse_pattern_modifier reads one modifier into *pt and returns true, or
  * reads nothing and returns false. parse_pattern_block reads
  * '{' PATTERN { pattern_modifier | transformation } '}' (the body of
- * function { pattern { } }) into *pt. */
+ * function { pattern { } }) into *pt. parse_pattern_end makes the checks
+ * that need all of a pattern's modifiers; the body's closing token is the
+ * current one (for error positions). */
 enum pattern_use { PATTERN_IN_PIGMENT, PATTERN_IN_NORMAL, PATTERN_IN_TEXTURE };
 bool parse_at_pattern(struct parser *p, enum pattern_kind *k);
 void parse_pattern_type(struct parser *p, struct pattern *pt, enum pattern_use use);
 bool parse_pattern_modifier(struct parser *p, struct pattern *pt);
 void parse_pattern_block(struct parser *p, struct pattern *pt);
+void parse_pattern_end(struct parser *p, const struct pattern *pt);
 /* A pigment body (what follows `pigment {`) up to and including `end`,
  * from black; the caller owns the result (texture_parse.c). */
 struct pigment *parse_pigment_body(struct parser *p, enum tok_kind end);

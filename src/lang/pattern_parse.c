@@ -511,6 +511,22 @@ bool parse_pattern_modifier(struct parser *p, struct pattern *pt)
 	}
 }
 
+/* The checks that need all of a pattern's modifiers, made at the token that
+ * closes its body: a pavement's pattern number must be one of its
+ * polyforms (POV-Ray: "pattern value for pavement is out of range"). */
+void parse_pattern_end(struct parser *p, const struct pattern *pt)
+{
+	if (pt->kind != PAT_PAVEMENT)
+		return;
+	int n = pavement_pattern_count(pt->n[0], pt->n[1]);
+	if (n == 0)
+		parse_error(p, "a pavement of hexagons has 1 to 5 tiles, not %d", pt->n[1]);
+	if (pt->n[2] > n)
+		parse_error(p, "a pavement of %d %s has %d pattern%s, not %d", pt->n[1],
+		            pt->n[0] == 3 ? "triangles" : pt->n[0] == 4 ? "squares" : "hexagons", n, n == 1 ? "" : "s",
+		            pt->n[2]);
+}
+
 /* pattern_block := '{' pattern_type { pattern_modifier | transformation } '}' */
 void parse_pattern_block(struct parser *p, struct pattern *pt)
 {
@@ -521,8 +537,11 @@ void parse_pattern_block(struct parser *p, struct pattern *pt)
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, TOK_RBRACE))
+		if (parse_peek(p)->kind == TOK_RBRACE) {
+			parse_pattern_end(p, pt);
+			parse_advance(p);
 			break;
+		}
 		struct xform xf;
 		enum pattern_kind pk;
 		if (parse_transform_item(p, &xf)) {

@@ -10,6 +10,7 @@
  * entry `[ VALUE BODY ]` share it. What a block refers to while it is
  * being read is held through a heap holder registered with parse_own, so
  * an error anywhere frees it. */
+#include "image/image.h"
 #include "lang/parser.h"
 
 #include <stdlib.h>
@@ -262,8 +263,11 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*pig)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -355,6 +359,11 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			parse_advance(p);
 			parse_expect(p, TOK_LBRACE);
 			parse_image_mapping(p, &pg->pat.img);
+			if (p->scene && p->scene->gs.assumed_gamma != 1) {
+				char err[1024];
+				if (!image_mapping_to_working(&pg->pat.img, p->scene->gs.assumed_gamma, err, sizeof err))
+					parse_error(p, "cannot read image file \"%s\": %s", pg->pat.img.img->path, err);
+			}
 			parse_expect(p, TOK_RBRACE);
 			continue;
 		}
@@ -405,8 +414,11 @@ static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*nrm)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -706,8 +718,11 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 			in_object = false;
 			continue;
 		}
-		if (parse_accept(p, end))
+		if (parse_peek(p)->kind == end) {
+			parse_pattern_end(p, &(*tex)->pat);
+			parse_advance(p);
 			break;
+		}
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;

@@ -8,7 +8,8 @@
  *               cylindrical spherical planar gradient onion radial spiral1
  *               spiral2 quilted leopard slope aoi function pigment image
  *   fractal.c   julia mandel magnet
- *   tiling.c    tiling pavement
+ *   tiling.c    tiling
+ *   pavement.c  pavement
  */
 #ifndef LUCENT_PATTERN_KINDS_H
 #define LUCENT_PATTERN_KINDS_H

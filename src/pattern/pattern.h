@@ -177,6 +177,11 @@ double pattern_wave(const struct pattern *pt, double v);
  * phase and the wave (used by pattern_value and by the normal code). */
 double pattern_raw(const struct pattern *pt, vec3 q, const struct pattern_ctx *ctx);
 
+/* How many polyforms `pavement` has for cells of the given number of sides
+ * (3, 4, 6) joined in tiles of `tiles` cells: the range of its `pattern`;
+ * 0 for a combination that POV-Ray refuses (pavement.c). */
+int pavement_pattern_count(int sides, int tiles);
+
 /* ---- noise (noise.c) ---- */
 
 /* POV-Ray's noise: a smooth pseudo-random function of space in [0, 1]

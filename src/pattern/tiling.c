@@ -1,4 +1,4 @@
-/* tiling.c: the tiling and pavement patterns (see kinds.h).
+/* tiling.c: the tiling pattern (see kinds.h; pavement is in pavement.c).
  *
  * tiling N: one of POV-Ray's 27 periodic tilings of the x-z plane (y is
  * ignored). At a point of a tile of type t (of the tiling's N types) the
@@ -69,10 +69,4 @@ PATTERN_FN(tiling)
 	if (n < 1 || n > TILING_COUNT || tiling_defs[n - 1].ntypes == 0)
 		return 0;
 	return tiling_at(&tiling_defs[n - 1], q.x, q.z);
-}
-
-PATTERN_FN(pavement)
-{
-	(void)pt; (void)q; (void)ctx;
-	return 0;
 }

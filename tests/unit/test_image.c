@@ -461,6 +461,41 @@ static void clear(struct image_mapping *m)
 	free(m->entry);
 }
 
+/* image_map's colours in the working gamma: POV-Ray 3.7.0 with
+ * global_settings { assumed_gamma 2.2 } printed, for
+ * function { pigment { image_map { png "rgb.png" } } }, at (0.1, 0.1, 0)
+ * 0.071704149, 0.467609644, 0.779187679 and at (0.7, 0.4, 0) 0.505797505,
+ * 0.467609644, 0.467609644; with gamma 1.5 at (0.7, 0.4, 0) 0.631687343,
+ * 0.598137081, 0.598137081 (the decoded values to the power 1/2.2). */
+static void test_working_gamma(void **state)
+{
+	(void)state;
+	char path[4200], err[512];
+	snprintf(path, sizeof path, "%s/rgb.png", dir);
+	struct image_mapping m = mapping(load("rgb.png", 0));
+	assert_true(image_mapping_to_working(&m, 2.2, err, sizeof err));
+	assert_near(m.img->working, 2.2, 0);
+	struct rgbft c;
+	image_map_eval(&m, v3(0.1, 0.1, 0), &c, NULL);
+	assert_near(c.r, 0.071704149, 1e-6);
+	assert_near(c.g, 0.467609644, 1e-6);
+	assert_near(c.b, 0.779187679, 1e-6);
+	image_map_eval(&m, v3(0.7, 0.4, 0), &c, NULL);
+	assert_near(c.r, 0.505797505, 1e-6);
+	assert_near(c.g, 0.467609644, 1e-6);
+	image_unref(m.img);
+	struct image_mapping g = mapping(image_load_working(path, 1.5, -1, 2.2, err, sizeof err));
+	assert_non_null(g.img);
+	image_map_eval(&g, v3(0.7, 0.4, 0), &c, NULL);
+	assert_near(c.r, 0.631687343, 1e-6);
+	assert_near(c.g, 0.598137081, 1e-6);
+	/* the linear image is another cache entry, untouched */
+	struct image *lin = load("rgb.png", 1.5);
+	assert_ptr_not_equal(lin, g.img);
+	image_unref(lin);
+	image_unref(g.img);
+}
+
 static void test_parse(void **state)
 {
 	(void)state;
@@ -524,7 +559,7 @@ int main(void)
 		cmocka_unit_test(test_interpolation),     cmocka_unit_test(test_map_types),
 		cmocka_unit_test(test_alpha),             cmocka_unit_test(test_palette),
 		cmocka_unit_test(test_pattern_value),     cmocka_unit_test(test_cache),
-		cmocka_unit_test(test_parse),
+		cmocka_unit_test(test_parse),               cmocka_unit_test(test_working_gamma),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -18,6 +18,7 @@
 #include "testutil.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #define TOL 1e-9
@@ -320,40 +321,71 @@ static void test_warp_order(void **state)
 	pattern_clear(&b);
 }
 
-static void test_cells_crackle_character(void **state)
+/* cells and crackle at points printed by POV-Ray 3.7.0 for
+ *   function { pattern { crackle } }, { crackle metric 1 },
+ *   { crackle metric 3 form <0.5, 0.3, 0.2> }, { crackle form <0, 0, 1> offset 0.4 },
+ *   { crackle metric 1 form <-1, 1, 0.5> offset 0.2 }, { crackle solid },
+ *   { crackle solid noise_generator 1 scale 0.5 }, { cells scale 0.3 }
+ * (the last point is one where metric 1's second-nearest point lies two
+ * cubes away). Values above 1 are POV-Ray's clipping. */
+static const struct { double x, y, z, v[8]; } crackle_cases[] = {
+	{2.8378576815, 3.8539267038, 6.6831216534, {0.2789089535, 0.3156627769, 0.4949608438, 1.0000000000, 1.0000000000, 0.2643172952, 0.4997857451, 0.1909864468}},
+	{-8.5141893147, 3.1051320427, 3.5927348848, {0.2190980682, 0.5084657436, 0.6583603890, 1.0000000000, 1.0000000000, 0.5026390753, 0.1266688240, 0.7010987585}},
+	{8.7639896708, 0.4710720644, 9.5807406724, {0.4070296563, 0.4621292950, 0.5119224172, 0.9531894759, 1.0000000000, 0.5171373678, 0.3513216691, 0.3814895926}},
+	{-5.1655600907, -0.8308073950, 6.5814241014, {0.1475529907, 0.1762934194, 0.4408655027, 0.7599075773, 0.7644304862, 0.4452694705, 0.3872149029, 0.5864633860}},
+	{6.4599302636, -5.1964032033, -3.7652071085, {0.6336795093, 0.8403781408, 0.5108004707, 1.0000000000, 1.0000000000, 0.4968989596, 0.4557083356, 0.2278429393}},
+	{9.4532641581, 1.3096058395, 7.0630326581, {0.3223975591, 0.3938924884, 0.5616182322, 0.9821173202, 1.0000000000, 0.6485511765, 0.5109945150, 0.1131925359}},
+	{-9.2661919676, 8.9448801472, -5.0754060911, {0.0410619101, 0.2714962866, 0.7800962564, 1.0000000000, 1.0000000000, 0.4783634429, 0.0327992964, 0.7439744708}},
+};
+
+static void set_crackle_case(struct pattern *pt, int k)
+{
+	struct xform s;
+	switch (k) {
+	case 1: pt->f[0] = 1; break;
+	case 2: pt->f[0] = 3; pt->form = v3(0.5, 0.3, 0.2); break;
+	case 3: pt->form = v3(0, 0, 1); pt->f[1] = 0.4; break;
+	case 4: pt->f[0] = 1; pt->form = v3(-1, 1, 0.5); pt->f[1] = 0.2; break;
+	case 5: pt->n[0] = 1; break;
+	case 6:
+		pt->n[0] = 1;
+		pt->noise_generator = 1;
+		s = xform_scale(v3(0.5, 0.5, 0.5));
+		pattern_transform(pt, &s);
+		break;
+	case 7:
+		s = xform_scale(v3(0.3, 0.3, 0.3));
+		pattern_transform(pt, &s);
+		break;
+	default: break;
+	}
+}
+
+static void test_cells_crackle_povray(void **state)
 {
 	(void)state;
-	struct pattern c = pattern_make(PAT_CELLS), k = pattern_make(PAT_CRACKLE);
-	/* cells: constant inside a unit cube, in [0, 1] */
-	assert_near(raw_at(&c, v3(2.1, 3.2, -0.7)), raw_at(&c, v3(2.9, 3.8, -0.1)), 0);
-	double lo = 1, hi = 0;
-	for (int i = 0; i < 500; i++) {
-		vec3 p = v3(i * 0.61, i * 0.23 - 40, 7 - i * 0.37);
-		double v = raw_at(&k, p);
-		assert_true(v >= -1e-12);          /* F2 − F1 ≥ 0 */
-		if (v < lo) lo = v;
-		if (v > hi) hi = v;
-		double cv = raw_at(&c, p);
-		assert_true(cv >= 0 && cv <= 1);
+	int bad = 0;
+	for (size_t i = 0; i < sizeof crackle_cases / sizeof crackle_cases[0]; i++) {
+		for (int k = 0; k < 8; k++) {
+			struct pattern pt = pattern_make(k == 7 ? PAT_CELLS : PAT_CRACKLE);
+			set_crackle_case(&pt, k);
+			struct pattern_ctx ctx = {.p = v3(crackle_cases[i].x, crackle_cases[i].y, crackle_cases[i].z)};
+			double v = pattern_value(&pt, &ctx);
+			if (fabs(v - crackle_cases[i].v[k]) > 1e-9) {
+				printf("case %d at point %d: %.10f, POV-Ray %.10f\n", k, (int)i, v, crackle_cases[i].v[k]);
+				bad++;
+			}
+			pattern_clear(&pt);
+		}
 	}
-	assert_true(lo < 0.05 && hi > 0.4);
-	/* offset (f[1], where the parser puts it) is added; metric (f[0]) 1
-	 * measures city-block distances, never shorter than Euclidean ones */
-	struct pattern o = pattern_make(PAT_CRACKLE), m1 = pattern_make(PAT_CRACKLE);
-	o.f[1] = 0.2;
-	m1.f[0] = 1;
-	m1.form = v3(1, 0, 0);
-	k.form = v3(1, 0, 0);
-	for (int i = 0; i < 50; i++) {
-		vec3 p = v3(i * 0.31, 0.7 - i * 0.11, i * 0.17);
-		assert_true(raw_at(&m1, p) >= raw_at(&k, p) - 1e-12);
-	}
-	k.form = v3(-1, 1, 0);
-	struct pattern k0 = pattern_make(PAT_CRACKLE);
-	assert_near(raw_at(&o, v3(0.3, 0.4, 0.5)), raw_at(&k0, v3(0.3, 0.4, 0.5)) + 0.2, 1e-12);
-	/* solid (n[0]): constant near a feature point */
-	k.n[0] = 1;
-	assert_near(raw_at(&k, v3(0.5, 0.5, 0.5)), raw_at(&k, v3(0.5001, 0.5, 0.5)), 0);
+	assert_int_equal(bad, 0);
+	/* a face belongs to the cube above it: POV-Ray 3.7.0's cells at
+	 * (0.5, y, 0.5) is 0.7118189153 for y = 0 and -5e-11, 0.0965327462 for
+	 * y = -2e-10 */
+	struct pattern c = pattern_make(PAT_CELLS);
+	struct pattern_ctx a = {.p = v3(0.5, -5e-11, 0.5)}, b = {.p = v3(0.5, -2e-10, 0.5)};
+	assert_near(pattern_value(&c, &a), 0.7118189153, 1e-9);
+	assert_near(pattern_value(&c, &b), 0.0965327462, 1e-9);
 }
 
 static void test_ripples_waves_character(void **state)
@@ -417,7 +449,7 @@ int main(void)
 		cmocka_unit_test(test_warp_mappings),
 		cmocka_unit_test(test_warp_cubic),
 		cmocka_unit_test(test_warp_order),
-		cmocka_unit_test(test_cells_crackle_character),
+		cmocka_unit_test(test_cells_crackle_povray),
 		cmocka_unit_test(test_number_of_waves),
 		cmocka_unit_test(test_ripples_waves_character),
 		cmocka_unit_test(test_special_normals),
