@@ -190,6 +190,19 @@ int main(int argc, char **argv)
 		opt.output = default_output(opt.input, opt.format);
 	}
 
+	/* The image's size is known before anything is parsed. */
+	double pixels = (double)opt.width * (double)opt.height;
+	if (pixels > opt.max_image) {
+		fprintf(stderr, "lucent: error: a %dx%d image has more than %.0f pixels (lucent --limit image-size=N "
+		        "raises the limit)\n", opt.width, opt.height, opt.max_image);
+		goto done;
+	}
+	if (!parse_memory_ok((size_t)pixels, 4 * sizeof(float))) {
+		fprintf(stderr, "lucent: error: a %dx%d image needs more memory than the machine has\n", opt.width,
+		        opt.height);
+		goto done;
+	}
+
 	struct sigaction sa;
 	memset(&sa, 0, sizeof sa);
 	sa.sa_handler = on_signal;
@@ -228,6 +241,7 @@ int main(int argc, char **argv)
 		.debug_out = debug_out,
 		.io_unrestricted = opt.io_unrestricted,
 		.stop = &interrupted,
+		.limits = opt.limits,
 	};
 	double t0 = now();
 	int prc = parse_scene(sm, &diag, &po, scene);

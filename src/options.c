@@ -14,6 +14,7 @@ void options_init(struct options *o)
 	o->output_to_file = true;
 	o->width = 800;
 	o->height = 600;
+	o->max_image = 1e8;
 	o->format = IMG_PNG;
 	o->bits = 8;
 	o->start_row = o->end_row = o->start_col = o->end_col = -1;
@@ -73,7 +74,11 @@ void options_usage(FILE *out)
 "  file.ini       read switches and Key=Value options from an .ini file\n"
 "\n"
 "  -q, --quiet    print only #debug/#warning text and errors\n"
-"  --io-unrestricted  let #fopen use absolute paths and '..'\n"
+"  --io-unrestricted  let the scene read and write outside its folder\n"
+"                 (and the +L paths and the stdlib, which it may read)\n"
+"  --limit NAME=N raise a bound: macro-depth (1000), include-depth (100),\n"
+"                 expr-depth (256), csg-depth (1000), array-size (1e8),\n"
+"                 string-length (2^28), mesh-size (1e8), image-size (1e8 pixels)\n"
 "  --signature    flat colour per object, no lighting (checks intersection)\n"
 "  --threads N    as +WTN\n"
 "  --output FILE  as +OFILE\n"
@@ -539,6 +544,26 @@ int options_parse(struct options *o, int argc, char **argv, FILE *err)
 		}
 		if (strcmp(a, "--io-unrestricted") == 0) {
 			o->io_unrestricted = true;
+			continue;
+		}
+		if (strcmp(a, "--limit") == 0 || strncmp(a, "--limit=", 8) == 0) {
+			const char *v = a[7] == '=' ? a + 8 : i + 1 < argc ? argv[++i] : NULL;
+			const char *eq = v ? strchr(v, '=') : NULL;
+			char *end = NULL;
+			double n = eq ? strtod(eq + 1, &end) : 0;
+			if (!eq || end == eq + 1 || *end || !(n >= 1) || n > 1e15) {
+				report(err, &cmd, "error", "--limit needs NAME=N with N a positive number, not '%s'", v ? v : "");
+				return 1;
+			}
+			char name[64];
+			snprintf(name, sizeof name, "%.*s", (int)(eq - v), v);
+			if (strcmp(name, "image-size") == 0)
+				o->max_image = n;
+			else if (!parse_limits_set(&o->limits, name, (size_t)n)) {
+				report(err, &cmd, "error", "unknown limit '%s' (macro-depth, include-depth, expr-depth, csg-depth, "
+				       "array-size, string-length, mesh-size, image-size)", name);
+				return 1;
+			}
 			continue;
 		}
 		if (strcmp(a, "--signature") == 0) {

@@ -26,6 +26,8 @@ struct options {
 	bool quiet;             /* -q: only #debug/#warning text and errors */
 	char *debug_file;       /* +GDfile: #debug text goes to this file */
 	bool io_unrestricted;   /* --io-unrestricted: #fopen may use any path */
+	struct parse_limits limits; /* --limit NAME=N (0: the default) */
+	double max_image;       /* --limit image-size=N: most pixels in the image */
 	bool signature;         /* --signature: flat colour per object, no shading */
 	struct parse_define *defines;
 	size_t ndefines;

@@ -79,6 +79,32 @@ printf '#include "colors.inc"\n#declare C = Red;\n' > scene/std.pov
 "$LUCENT" -q +W8 +H6 -F scene/std.pov > err.txt 2>&1
 check "the stdlib is readable" [ $? -eq 0 ]
 
+# ---- limits: named in the error, raised with --limit ----
+printf '#declare S = "abcdefgh";\n#while (1)\n  #declare S = concat(S, S);\n#end\n' > grow.pov
+"$LUCENT" -q +W8 +H6 -F --limit string-length=1000 grow.pov > err.txt 2>&1
+rc=$?
+check "a string past its limit is an error (status 1)" [ $rc -eq 1 ]
+check "... that names the limit and the option" contains err.txt "concat() would make a string longer than 1000 bytes (lucent --limit string-length=N raises the limit)"
+printf '#declare A = array[2000][1000];\n' > arr.pov
+"$LUCENT" -q +W8 +H6 -F --limit array-size=1000 arr.pov > err.txt 2>&1
+check "--limit array-size lowers the array limit" contains err.txt "more than 1000 elements (lucent --limit array-size=N"
+"$LUCENT" -q +W8 +H6 -F --limit array-size=2000000 arr.pov > err.txt 2>&1
+check "--limit array-size raises it" [ $? -eq 0 ]
+printf '#macro R(N) #if (N > 0) R(N - 1) #end #end\nR(1500)\n' > deep.pov
+"$LUCENT" -q +W8 +H6 -F deep.pov > err.txt 2>&1
+check "1500 nested macro calls pass the default limit (1000) only when raised" contains err.txt "(lucent --limit macro-depth=N raises the limit)"
+"$LUCENT" -q +W8 +H6 -F --limit macro-depth=2000 deep.pov > err.txt 2>&1
+check "--limit macro-depth=2000 lets them run" [ $? -eq 0 ]
+"$LUCENT" -q +W8 +H6 -F --limit nonsense=3 deep.pov > err.txt 2>&1
+check "an unknown limit is refused, naming the known ones" contains err.txt "unknown limit 'nonsense' (macro-depth"
+"$LUCENT" -q +W20000 +H20000 deep.pov > err.txt 2>&1
+check "an image over the size limit fails before parsing" contains err.txt "a 20000x20000 image has more than 100000000 pixels (lucent --limit image-size=N raises the limit)"
+# 65536x65536 float RGBA is 64 GiB: more than the machines this runs on.
+"$LUCENT" -q +W65536 +H65536 --limit image-size=1e10 deep.pov > err.txt 2>&1
+rc=$?
+check "an image larger than the machine's memory fails with a clear error" [ $rc -eq 1 ]
+check "... saying so" contains err.txt "needs more memory than the machine has"
+
 # ---- output: a stopped render leaves the previous image intact ----
 cat > slow.pov <<'POV'
 #version 3.7;
@@ -104,7 +130,7 @@ for delay in 0.05 0.1 0.2 0.3 0.4 0.6 0.8 1.0 1.3 1.6; do
 	if [ $rc -eq 2 ]; then
 		cmp -s out.png before.png || intact=0
 	elif [ $rc -eq 0 ]; then
-		iinfo out.png 2>/dev/null | grep -q "320 x 240" || intact=0
+		iinfo out.png 2>/dev/null | grep -qE "320 x +240" || intact=0
 		cp before.png out.png
 	else
 		intact=0

@@ -131,6 +131,12 @@ const struct math_fn *builtin_math_fn(enum kw k)
 
 /* ---- string formatting ---- */
 
+int parse_format_arg(double x)
+{
+	/* Far past the widths and precisions parse_format_float honours. */
+	return x > 1000 ? 1000 : x < -1000 ? -1000 : x == x ? (int)x : 0;
+}
+
 const char *parse_format_float(struct parser *p, double x, int l, int prec)
 {
 	char buf[512];
@@ -422,6 +428,9 @@ struct value builtin_call(struct parser *p)
 		do {
 			const char *s = arg_string(p, name);
 			size_t n = strlen(s);
+			if (len + n > p->lim.string_length)
+				parse_error_at(p, at, "concat() would make a string longer than %zu bytes (lucent --limit "
+				               "string-length=N raises the limit)", p->lim.string_length);
 			if (len + n + 1 > cap) {
 				while (len + n + 1 > cap)
 					cap *= 2;
@@ -443,7 +452,7 @@ struct value builtin_call(struct parser *p)
 		double l = arg_float(p, name);
 		comma(p);
 		double pr = arg_float(p, name);
-		r = (struct value){.kind = VAL_STRING, .pos = at, .str = parse_format_float(p, x, (int)l, (int)pr)};
+		r = (struct value){.kind = VAL_STRING, .pos = at, .str = parse_format_float(p, x, parse_format_arg(l), parse_format_arg(pr))};
 		break;
 	}
 	case KW_STRLWR: case KW_STRUPR: {
@@ -464,9 +473,12 @@ struct value builtin_call(struct parser *p)
 		comma(p);
 		double len = arg_float(p, name);
 		size_t n = strlen(s);
-		long st = (long)start, ln = (long)len;
-		if (st < 1 || ln < 0 || (size_t)(st + ln - 1) > n)
-			parse_error_at(p, at, "substr(\"%s\", %ld, %ld) reaches past the end of the string (length %zu)", s, st, ln, n);
+		/* Checked as floats first: a huge one has no long value. */
+		double fst = trunc(start), fln = trunc(len);
+		if (!(fst >= 1) || !(fln >= 0) || fst + fln - 1 > (double)n)
+			parse_error_at(p, at, "substr(\"%s\", %.15g, %.15g) reaches past the end of the string (length %zu)", s,
+			               fst == fst ? fst : 0, fln == fln ? fln : 0, n);
+		long st = (long)fst, ln = (long)fln;
 		r = str_value(p, s + st - 1, (size_t)ln, at);
 		break;
 	}
@@ -481,7 +493,7 @@ struct value builtin_call(struct parser *p)
 		double l = arg_float(p, name);
 		comma(p);
 		double pr = arg_float(p, name);
-		int n = (int)nd;
+		int n = parse_format_arg(nd);
 		if (n < 2) n = 2;
 		if (n > 5) n = 5;
 		/* More components than N: the first N are written (POV-Ray's
@@ -493,7 +505,7 @@ struct value builtin_call(struct parser *p)
 		char *buf = malloc(cap);
 		if (!buf) abort();
 		for (int i = 0; i < n; i++) {
-			const char *part = parse_format_float(p, v.v[i], (int)l, (int)pr);
+			const char *part = parse_format_float(p, v.v[i], parse_format_arg(l), parse_format_arg(pr));
 			size_t need = strlen(part) + (i ? strlen(sep) : 0);
 			while (len + need + 1 > cap) {
 				cap *= 2;

@@ -535,9 +535,14 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	struct frame *mf;
 	{
 		/* push_frame's checks, then fill in the body. */
-		if (p->nframes == MAX_FRAMES) {
+		size_t macros = 0;
+		for (int i = 0; i < p->nframes; i++)
+			macros += p->frames[i].kind == FRAME_MACRO;
+		if (macros >= p->lim.macro_depth || p->nframes == p->capframes) {
 			sym_free(locals);
-			parse_error_at(p, name->pos, "macro calls nested too deeply (more than %d levels): is %s recursing without end?", MAX_FRAMES, m->name);
+			parse_error_at(p, name->pos, "macro calls nested too deeply (more than %zu levels): is %s recursing "
+			               "without end? (lucent --limit macro-depth=N raises the limit)", p->lim.macro_depth,
+			               m->name);
 		}
 		mf = &p->frames[p->nframes++];
 		p->events++;

@@ -159,8 +159,8 @@ static struct value parse_binary(struct parser *p, int min_prec, bool in_vector)
 /* cond := binary [ '?' cond ':' cond ] */
 static struct value parse_cond(struct parser *p, bool in_vector)
 {
-	if (++p->expr_depth > MAX_EXPR_DEPTH)
-		parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+	if (++p->expr_depth > (int)p->lim.expr_depth)
+		parse_error(p, "expression nested too deeply (more than %d levels; lucent --limit expr-depth=N raises it)", (int)p->lim.expr_depth);
 	struct value c = parse_binary(p, 1, in_vector);
 	if (p->rel_ok && parse_peek_cont(p)->kind == TOK_QUESTION) {
 		need_float(p, &c, "the condition of '?:'");
@@ -577,8 +577,8 @@ static struct value parse_unary(struct parser *p)
 	if (t->kind == TOK_MINUS || t->kind == TOK_PLUS || t->kind == TOK_BANG) {
 		enum tok_kind k = (enum tok_kind)t->kind;
 		parse_advance(p);
-		if (++p->expr_depth > MAX_EXPR_DEPTH)
-			parse_error(p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+		if (++p->expr_depth > (int)p->lim.expr_depth)
+			parse_error(p, "expression nested too deeply (more than %d levels; lucent --limit expr-depth=N raises it)", (int)p->lim.expr_depth);
 		struct value v = parse_unary(p);
 		p->expr_depth--;
 		need_numeric(p, &v, k == TOK_BANG ? "'!'" : "a sign");

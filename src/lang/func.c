@@ -308,8 +308,8 @@ static void c_unary(struct fcomp *c)
 	if (t->kind == TOK_MINUS || t->kind == TOK_PLUS || t->kind == TOK_BANG) {
 		enum tok_kind k = (enum tok_kind)t->kind;
 		parse_advance(c->p);
-		if (++c->p->expr_depth > MAX_EXPR_DEPTH)
-			parse_error(c->p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+		if (++c->p->expr_depth > (int)c->p->lim.expr_depth)
+			parse_error(c->p, "expression nested too deeply (more than %d levels; lucent --limit expr-depth=N raises it)", (int)c->p->lim.expr_depth);
 		c_unary(c);
 		c->p->expr_depth--;
 		if (k == TOK_MINUS)
@@ -357,8 +357,8 @@ static void c_binary(struct fcomp *c, int min_prec)
 /* expr := binary [ '?' expr ':' expr ] */
 static void c_expr(struct fcomp *c)
 {
-	if (++c->p->expr_depth > MAX_EXPR_DEPTH)
-		parse_error(c->p, "expression nested too deeply (more than %d levels)", MAX_EXPR_DEPTH);
+	if (++c->p->expr_depth > (int)c->p->lim.expr_depth)
+		parse_error(c->p, "expression nested too deeply (more than %d levels; lucent --limit expr-depth=N raises it)", (int)c->p->lim.expr_depth);
 	c_binary(c, 1);
 	if (parse_accept(c->p, TOK_QUESTION)) {
 		int jz = fn_emit(c->f, (struct fn_instr){.op = FN_JZ});

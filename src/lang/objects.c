@@ -328,6 +328,9 @@ static size_t list_count(struct parser *p, const char *what)
 	double n = trunc(parse_float(p)); /* POV-Ray truncates fractions */
 	if (!(n >= 0 && n <= MESH_MAX_ITEMS))
 		parse_error_at(p, at, "the number of %s must be from 0 to %u, found %g", what, MESH_MAX_ITEMS, n);
+	if (n > (double)p->lim.mesh_size)
+		parse_error_at(p, at, "%.0f %s is more than a mesh may have (%zu; lucent --limit mesh-size=N raises it)", n,
+		               what, p->lim.mesh_size);
 	return (size_t)n;
 }
 
@@ -373,6 +376,9 @@ static void uv_value(struct parser *p, double uv[2])
 static bool parse_mesh_item(struct parser *p, struct mesh_builder *mb)
 {
 	if (parse_is_kw(p, KW_TRIANGLE) || parse_is_kw(p, KW_SMOOTH_TRIANGLE)) {
+		if (mesh_face_count(mb) >= p->lim.mesh_size)
+			parse_error(p, "the mesh has more than %zu triangles (lucent --limit mesh-size=N raises the limit)",
+			            p->lim.mesh_size);
 		bool smooth = parse_is_kw(p, KW_SMOOTH_TRIANGLE);
 		parse_advance(p);
 		parse_expect(p, TOK_LBRACE);
@@ -994,7 +1000,11 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		}
 		if (is_csg && tk->kind == TOK_KEYWORD && parse_is_object_start((enum kw)tk->kw)) {
 			struct object **kids;
+			if (++p->csg_depth > p->lim.csg_depth)
+				parse_error(p, "CSG objects nested too deeply (more than %zu levels; lucent --limit csg-depth=N "
+				            "raises it)", p->lim.csg_depth);
 			struct object *c = parse_object_in(p, true);
+			p->csg_depth--;
 			/* In POV-Ray a light that comes first in a difference takes
 			 * the place of the base, so every object in it is subtracted
 			 * (measured: the same image as an intersection of the objects

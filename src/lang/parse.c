@@ -7,9 +7,12 @@
 #include "lang/intern.h"
 
 #include <errno.h>
+#include <limits.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* ---- errors ---- */
 
@@ -30,6 +33,42 @@ void parse_error(struct parser *p, const char *fmt, ...)
 	diag_vreport(p->d, DIAG_ERROR, pos, fmt, ap);
 	va_end(ap);
 	longjmp(*p->boundary, 1);
+}
+
+void parse_limits_default(struct parse_limits *l)
+{
+	*l = (struct parse_limits){
+		.macro_depth = 1000, .include_depth = 100, .expr_depth = 256, .csg_depth = 1000,
+		.array_size = 100000000, .string_length = 1u << 28, .mesh_size = 100000000,
+	};
+}
+
+bool parse_limits_set(struct parse_limits *l, const char *name, size_t value)
+{
+	static const struct { const char *name; size_t off; } fields[] = {
+		{"macro-depth", offsetof(struct parse_limits, macro_depth)},
+		{"include-depth", offsetof(struct parse_limits, include_depth)},
+		{"expr-depth", offsetof(struct parse_limits, expr_depth)},
+		{"csg-depth", offsetof(struct parse_limits, csg_depth)},
+		{"array-size", offsetof(struct parse_limits, array_size)},
+		{"string-length", offsetof(struct parse_limits, string_length)},
+		{"mesh-size", offsetof(struct parse_limits, mesh_size)},
+	};
+	for (size_t i = 0; i < sizeof fields / sizeof fields[0]; i++)
+		if (strcmp(name, fields[i].name) == 0) {
+			*(size_t *)((char *)l + fields[i].off) = value;
+			return true;
+		}
+	return false;
+}
+
+bool parse_memory_ok(size_t n, size_t size)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+	if (pages <= 0 || page <= 0)
+		return true;
+	double have = (double)pages * (double)page;
+	return (double)n * (double)size <= have;
 }
 
 void parse_step(struct parser *p, struct srcpos pos, bool loop_head)
@@ -169,8 +208,9 @@ static void pop_frame(struct parser *p)
 
 static struct frame *push_frame(struct parser *p, struct srcpos from)
 {
-	if (p->nframes == MAX_FRAMES)
-		parse_error_at(p, from, "includes and macro calls nested too deeply (more than %d levels)", MAX_FRAMES);
+	if (p->nframes == p->capframes)
+		parse_error_at(p, from, "includes and macro calls nested too deeply (more than %d levels; "
+		               "lucent --limit macro-depth=N raises it)", p->capframes);
 	struct frame *f = &p->frames[p->nframes++];
 	p->events++;
 	p->bindgen++;
@@ -185,8 +225,9 @@ void parse_push_file(struct parser *p, uint32_t file, struct srcpos from)
 	int includes = 0;
 	for (int i = 0; i < p->nframes; i++)
 		includes += p->frames[i].kind == FRAME_FILE;
-	if (includes > MAX_INCLUDE_DEPTH)
-		parse_error_at(p, from, "includes nested too deeply (more than %d levels)", MAX_INCLUDE_DEPTH);
+	if ((size_t)includes > p->lim.include_depth)
+		parse_error_at(p, from, "includes nested too deeply (more than %zu levels; lucent --limit include-depth=N "
+		               "raises it)", p->lim.include_depth);
 	struct frame *f = push_frame(p, from);
 	f->kind = FRAME_FILE;
 	f->file = file;
@@ -377,12 +418,16 @@ static struct value *find_binding(struct parser *p, const char *name, struct sym
 	return sym_get(p->globals, name);
 }
 
+/* Each frame adds at most one link to a chain of by-reference parameters:
+ * a bound far past any frame limit only guards against a cycle. */
+enum { ALIAS_MAX_HOPS = 1 << 24 };
+
 /* The binding an alias names (an array element for A[i] passed by
  * reference); NULL if it no longer exists. With `write`, the array is
  * unshared first and a missing whole binding is created. */
 static struct value *follow_alias(struct value *v, bool write)
 {
-	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < MAX_FRAMES; hops++) {
+	for (int hops = 0; v && v->kind == VAL_ALIAS && hops < ALIAS_MAX_HOPS; hops++) {
 		struct alias a = v->alias;
 		v = sym_get(a.table, a.name);
 		if (!v && write && a.index == ALIAS_WHOLE) {
@@ -475,7 +520,7 @@ struct symtab *parse_alias_target(struct parser *p, const char **name)
 {
 	struct symtab *t;
 	struct value *v = find_binding(p, *name, &t);
-	for (int hops = 0; v && v->kind == VAL_ALIAS && v->alias.index == ALIAS_WHOLE && hops < MAX_FRAMES; hops++) {
+	for (int hops = 0; v && v->kind == VAL_ALIAS && v->alias.index == ALIAS_WHOLE && hops < ALIAS_MAX_HOPS; hops++) {
 		t = v->alias.table;
 		*name = v->alias.name;
 		v = sym_get(t, *name);
@@ -592,6 +637,23 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	sym_track(p->globals, &p->bindgen);
 	p->xcache = exprcache_new();
 	p->version = 3.7;
+	parse_limits_default(&p->lim);
+	{
+		/* The user's limits over the defaults. */
+		const size_t *u = (const size_t *)&o->limits;
+		size_t *l = (size_t *)&p->lim;
+		for (size_t i = 0; i < sizeof p->lim / sizeof(size_t); i++)
+			if (u[i])
+				l[i] = u[i];
+	}
+	if (p->lim.expr_depth > INT_MAX / 2)
+		p->lim.expr_depth = INT_MAX / 2;
+	/* The main file, include_depth + 1 files (parse_push_file) and the
+	 * macro calls. */
+	size_t cap = p->lim.macro_depth + p->lim.include_depth + 2;
+	p->capframes = cap > INT_MAX / 2 ? INT_MAX / 2 : (int)cap;
+	p->frames = calloc((size_t)p->capframes, sizeof *p->frames);
+	if (!p->frames) abort();
 	d->context = print_context;
 	d->context_arg = p;
 
@@ -627,6 +689,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	texture_unref(p->default_tex);
 	d->context = NULL;
 	d->context_arg = NULL;
+	free(p->frames);
 	free(p);
 	return rc;
 }

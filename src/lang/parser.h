@@ -12,9 +12,10 @@
 
 #include <setjmp.h>
 
-/* Limits. Nesting of includes and macro calls shares MAX_FRAMES. */
-enum { MAX_FRAMES = 1000, MAX_INCLUDE_DEPTH = 100, MAX_OWNED = 4096, MAX_EXPR_DEPTH = 256, MAX_CONDS = 4096,
-       MAX_DIRECTIVE_DEPTH = 256 };
+/* Limits. The nesting of includes and macro calls, expressions, CSG and
+ * the sizes of arrays, strings and meshes are in parse_opts.limits (the
+ * user can raise them); these are fixed. */
+enum { MAX_OWNED = 4096, MAX_CONDS = 4096, MAX_DIRECTIVE_DEPTH = 256 };
 
 enum frame_kind { FRAME_FILE, FRAME_MACRO };
 
@@ -60,8 +61,10 @@ struct parser {
 	struct interner *names;
 	jmp_buf *boundary;           /* where errors unwind to */
 
-	struct frame frames[MAX_FRAMES];
-	int nframes;
+	struct parse_limits lim;     /* o->limits with the defaults filled in */
+	struct frame *frames;        /* lim.macro_depth + lim.include_depth + 1 */
+	int nframes, capframes;
+	size_t csg_depth;            /* CSG objects open around the current one */
 	struct cond conds[MAX_CONDS];
 	int nconds;
 	bool interrupted;            /* stopped through o->stop */
@@ -267,6 +270,9 @@ void parse_keyword_color(enum kw k, const double *v, int n, bool is_float, doubl
 void parse_need_float(struct parser *p, const struct value *v, const char *what);
 void parse_need_numeric(struct parser *p, const struct value *v, const char *what);
 const char *parse_intern(struct parser *p, const char *s, size_t n);
+/* A width, precision or count argument of str() or vstr() as an int,
+ * saturated to +-1000 (a NaN is 0): the float may be anything. */
+int parse_format_arg(double x);
 /* A number formatted as POV-Ray's str(x, l, prec) does. */
 const char *parse_format_float(struct parser *p, double x, int l, int prec);
 

@@ -86,8 +86,11 @@ static struct array *parse_array(struct parser *p)
 			parse_error_at(p, at, "an array dimension must be from 1 to 100000000, not %g", n);
 		dims[nd++] = (int)n;
 		total *= (size_t)n;
-		if (total > 100000000)
-			parse_error_at(p, at, "the array would have more than 100000000 elements");
+		if (total > p->lim.array_size)
+			parse_error_at(p, at, "the array would have more than %zu elements (lucent --limit array-size=N raises "
+			               "the limit)", p->lim.array_size);
+		if (!parse_memory_ok(total, sizeof(struct value)))
+			parse_error_at(p, at, "the array's %zu elements would need more memory than the machine has", total);
 	}
 	if (nd == 0)
 		parse_expected(p, "'[' and the array's size");

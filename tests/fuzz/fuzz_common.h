@@ -24,7 +24,11 @@
 #define FUZZ_STDLIB "stdlib"
 #endif
 
-enum { FUZZ_MAX_STEPS = 20000, FUZZ_W = 8, FUZZ_H = 6 };
+/* Bounds for one input: endless loops stop after FUZZ_MAX_STEPS
+ * directives and macro calls, and sizes are capped low, so that a loop
+ * growing a string or an array (quadratic work) stays far under the
+ * one-second hang threshold. */
+enum { FUZZ_MAX_STEPS = 5000, FUZZ_MAX_SIZE = 1000000, FUZZ_W = 8, FUZZ_H = 6 };
 
 static char fuzz_dir[64], fuzz_scene[96];
 static FILE *fuzz_null;
@@ -91,6 +95,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		.image_height = FUZZ_H,
 		.debug_out = fuzz_null,
 		.max_steps = FUZZ_MAX_STEPS,
+		.limits = {.array_size = FUZZ_MAX_SIZE, .string_length = FUZZ_MAX_SIZE, .mesh_size = FUZZ_MAX_SIZE},
 	};
 	int rc = parse_scene(sm, &diag, &po, scene);
 	if (FUZZ_RENDER && rc == 0) {

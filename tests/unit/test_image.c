@@ -435,6 +435,9 @@ static int parse_block(const char *text, struct image_mapping *m, char *msg, siz
 	p->boundary = &jb;
 	p->globals = sym_new();
 	p->version = 3.7;
+	parse_limits_default(&p->lim);
+	p->capframes = 4;
+	p->frames = calloc((size_t)p->capframes, sizeof *p->frames);
 	int rc;
 	if (setjmp(jb) == 0) {
 		parse_push_file(p, file, (struct srcpos){0, 0, 0});
@@ -449,6 +452,7 @@ static int parse_block(const char *text, struct image_mapping *m, char *msg, siz
 	for (int i = p->nframes - 1; i >= 0; i--)
 		sym_free(p->frames[i].locals);
 	sym_free(p->globals);
+	free(p->frames);
 	free(p);
 	fclose(out);
 	src_free(sm);
