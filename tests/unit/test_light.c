@@ -27,34 +27,8 @@
 #include <unistd.h>
 
 #include "testutil.h"
+#include "parsetext.h"
 
-struct parsed {
-	struct srcmgr *sm;
-	struct scene *s;
-	char path[64];
-};
-
-static void parse_text(struct parsed *r, const char *text)
-{
-	snprintf(r->path, sizeof r->path, "/tmp/lucent-test-light-%d.pov", (int)getpid());
-	FILE *f = fopen(r->path, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
-	r->sm = src_new();
-	struct diag d;
-	diag_init(&d, r->sm, stderr);
-	r->s = scene_new();
-	struct parse_opts o = {.input = r->path, .image_width = 8, .image_height = 8, .debug_out = stderr};
-	assert_int_equal(parse_scene(r->sm, &d, &o, r->s), 0);
-}
-
-static void parsed_free(struct parsed *r)
-{
-	scene_free(r->s);
-	src_free(r->sm);
-	remove(r->path);
-}
 
 static unsigned features_of(const char *text)
 {
