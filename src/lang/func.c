@@ -406,6 +406,8 @@ static struct fn *pattern_function(struct parser *p, int np)
 	return f;
 }
 
+static struct fn *function_body(struct parser *p, const char **params, int np);
+
 /* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')'
  *   | pattern '{' .. '}' | pigment '{' .. '}' ) '}'
  * The current token is 'function'. */
@@ -435,6 +437,19 @@ struct fn *parse_function(struct parser *p)
 		params[2] = kw_names[KW_Z];
 		np = 3;
 	}
+	return function_body(p, params, np);
+}
+
+struct fn *parse_function_body(struct parser *p)
+{
+	const char *params[3] = {kw_names[KW_X], kw_names[KW_Y], kw_names[KW_Z]};
+	return function_body(p, params, 3);
+}
+
+/* '{' ( expr | internal '(' N ')' | pattern '{' .. '}' | pigment '{' .. '}' ) '}'
+ * with the given parameter names. */
+static struct fn *function_body(struct parser *p, const char **params, int np)
+{
 	parse_expect(p, TOK_LBRACE);
 	if (parse_is_kw(p, KW_INTERNAL)) {
 		struct srcpos at = parse_peek(p)->pos;
