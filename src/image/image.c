@@ -165,9 +165,35 @@ struct image *image_load_opts(const char *path, double gamma, int premultiplied,
 	return image_load_working(path, gamma, premultiplied, 1, err, errsize);
 }
 
+struct image *image_from_pixels(int width, int height, int channels, float *px)
+{
+	size_t n = (size_t)width * height;
+	struct image *img = calloc(1, sizeof *img);
+	unsigned char *index = malloc(n ? n : 1);
+	if (!img || !index) {
+		free(img); free(index); free(px);
+		return NULL;
+	}
+	img->refs = 1;
+	img->width = width;
+	img->height = height;
+	img->channels = channels;
+	img->has_alpha = channels == 2 || channels == 4;
+	img->premultiplied = 0;
+	img->working = 1;
+	img->px = px;
+	for (size_t i = 0; i < n; i++) {
+		double r = px[i * 4];
+		r = r < 0 ? 0 : r > 1 ? 1 : r;
+		index[i] = (unsigned char)(r * 255 + 0.5);
+	}
+	img->index = index;
+	return img;
+}
+
 bool image_mapping_to_working(struct image_mapping *m, double working, char *err, unsigned errsize)
 {
-	if (!m->img || working == m->img->working)
+	if (!m->img || !m->img->path || working == m->img->working)
 		return true;
 	struct image *w = image_load_working(m->img->path, m->img->gamma, m->img->premultiplied, working, err, errsize);
 	if (!w)

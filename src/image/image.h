@@ -21,7 +21,8 @@
 
 struct image {
 	int refs;
-	const char *path;            /* owned copy */
+	const char *path;            /* owned copy; NULL for an image made in memory
+	                              * (image_from_pixels), which is not cached */
 	int width, height;
 	int channels;                /* as stored in the file: 1 grey, 2 grey+alpha, 3 rgb, 4 rgba */
 	float *px;                   /* width*height*4: r g b a, rows top to bottom, linear
@@ -61,6 +62,12 @@ struct image *image_load_working(const char *path, double gamma, int premultipli
  * m->img by its variant for that working gamma (the file is read again
  * unless the cache has it). false, with a message in err, if that fails. */
 bool image_mapping_to_working(struct image_mapping *m, double working, char *err, unsigned errsize);
+/* An image made in memory (image_map { function W, H { } }): px holds
+ * width*height*4 floats r g b a, rows top to bottom, and becomes the
+ * image's; channels as in struct image. Not cached, never re-encoded into a
+ * working gamma. Returns one reference, or NULL (px freed) when out of
+ * memory. */
+struct image *image_from_pixels(int width, int height, int channels, float *px);
 struct image *image_ref(struct image *img);
 void image_unref(struct image *img);
 

@@ -458,6 +458,8 @@ static struct fn *vector_function(struct parser *p, bool params)
 	return f;
 }
 
+static struct fn *function_body(struct parser *p, const char **params, int np, bool has_params);
+
 /* function [ '(' param {',' param} ')' ] '{' ( expr | internal '(' N ')'
  *   | pattern '{' .. '}' | pigment '{' .. '}' | spline '{' .. '}'
  *   | transform '{' .. '}' ) '}'
@@ -489,6 +491,21 @@ struct fn *parse_function(struct parser *p)
 		params[2] = kw_names[KW_Z];
 		np = 3;
 	}
+	return function_body(p, params, np, has_params);
+}
+
+struct fn *parse_function_body(struct parser *p)
+{
+	const char *params[3] = {kw_names[KW_X], kw_names[KW_Y], kw_names[KW_Z]};
+	return function_body(p, params, 3, false);
+}
+
+/* '{' ( expr | internal '(' N ')' | pattern '{' .. '}' | pigment '{' .. '}'
+ *   | spline '{' .. '}' | transform '{' .. '}' ) '}'
+ * with the given parameter names (has_params: a parameter list was written,
+ * which spline and transform functions refuse). */
+static struct fn *function_body(struct parser *p, const char **params, int np, bool has_params)
+{
 	parse_expect(p, TOK_LBRACE);
 	if (parse_is_kw(p, KW_INTERNAL)) {
 		struct srcpos at = parse_peek(p)->pos;

@@ -5,6 +5,7 @@
 #include "lang/parser.h"
 
 #include "image/image.h"
+#include "scene/fn.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -91,7 +92,7 @@ static void parse_palette_amount(struct parser *p, struct image_mapping *m, bool
 	int n = m->img->palette_size;
 	if (n == 0)
 		parse_error_at(p, kw_at, "'%s %d, ...' needs an image with a palette, and \"%s\" has none (use '%s all')",
-		               what, index, m->img->path, what);
+		               what, index, m->img->path ? m->img->path : "a function image", what);
 	if (index < 0 || index >= n)
 		parse_error_at(p, at, "palette index %d is out of range: \"%s\" has %d palette entries (0 to %d)", index,
 		               m->img->path, n, n - 1);
@@ -114,11 +115,100 @@ static void parse_palette_amount(struct parser *p, struct image_mapping *m, bool
 	m->nentry++;
 }
 
+/* IMAGE_MAP_MODS: { map_type INT | once | interpolate INT | filter (all
+ * FLOAT | INT, FLOAT) | transmit (all FLOAT | INT, FLOAT) | use_alpha
+ * | use_index | use_color | use_colour } into *lm (*entry_slot: the parse
+ * slot of lm's palette entries, -1 for none). */
+static void image_modifiers(struct parser *p, struct image_mapping *lm, int *entry_slot)
+{
+	for (;;) {
+		struct srcpos at;
+		if (parse_accept_kw(p, KW_MAP_TYPE)) {
+			int v = parse_int(p, &at);
+			if (v != 0 && v != 1 && v != 2 && v != 5)
+				parse_error_at(p, at, "map_type must be 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), not %d", v);
+			lm->map_type = v;
+		} else if (parse_accept_kw(p, KW_INTERPOLATE)) {
+			int v = parse_int(p, &at);
+			if (v != 2 && v != 3 && v != 4)
+				parse_error_at(p, at, "interpolate must be 2 (bilinear), 3 (bicubic) or 4 (normalized distance), not %d", v);
+			lm->interpolate = v;
+		} else if (parse_accept_kw(p, KW_ONCE)) {
+			lm->once = true;
+		} else if (parse_accept_kw(p, KW_FILTER)) {
+			parse_palette_amount(p, lm, true, entry_slot);
+		} else if (parse_accept_kw(p, KW_TRANSMIT)) {
+			parse_palette_amount(p, lm, false, entry_slot);
+		} else if (parse_accept_kw(p, KW_USE_ALPHA)) {
+			lm->use_alpha = true;
+		} else if (parse_accept_kw(p, KW_USE_INDEX)) {
+			lm->use_index = true;
+			lm->use_color = false;
+		} else if (parse_accept_kw(p, KW_USE_COLOR) || parse_accept_kw(p, KW_USE_COLOUR)) {
+			lm->use_color = true;
+			lm->use_index = false;
+		} else {
+			break;
+		}
+	}
+}
+
+/* function W ',' H '{' FUNCTION_BODY '}': an image of W x H pixels made
+ * from a float, pattern or pigment function of x, y (z = 0), as POV-Ray
+ * makes it (measured): pixel column i, row j from the top is the function
+ * at (i/(W-1), j/(H-1), 0); a pigment gives colour and alpha (1 -
+ * transmit; filter is dropped), the others grey; every component is stored
+ * in 16 bits as C does it, (unsigned short)(int)(v * 65535) in single
+ * precision (0.7000076 gives 45875, not 45874), so values
+ * outside [0, 1] wrap (1.5 gives 0.49998, -0.25 gives 0.75003). Returns
+ * one reference. The current token is 'function'. */
+static struct image *function_image(struct parser *p)
+{
+	parse_advance(p);
+	struct srcpos wat = parse_peek(p)->pos;
+	int w = (int)parse_float(p);
+	parse_expect(p, TOK_COMMA);
+	struct srcpos hat = parse_peek(p)->pos;
+	int h = (int)parse_float(p);
+	if (w < 1)
+		parse_error_at(p, wat, "a function image's width must be at least 1, not %d", w);
+	if (h < 1)
+		parse_error_at(p, hat, "a function image's height must be at least 1, not %d", h);
+	struct fn *f = parse_function_body(p);
+	bool color = f->pig != NULL;
+	float *px = malloc((size_t)w * (size_t)h * 4 * sizeof(float));
+	if (!px)
+		parse_error_at(p, wat, "out of memory for a %d x %d function image", w, h);
+	for (int j = 0; j < h; j++)
+		for (int i = 0; i < w; i++) {
+			double args[3] = {w > 1 ? (double)i / (w - 1) : 0, h > 1 ? (double)j / (h - 1) : 0, 0};
+			double c[5];
+			if (color) {
+				fn_eval_color(f, args, c);
+				c[3] = 1 - c[4];
+			} else {
+				c[0] = c[1] = c[2] = fn_eval(f, args);
+				c[3] = 1;
+			}
+			float *d = &px[((size_t)j * w + i) * 4];
+			for (int k = 0; k < 4; k++) {
+				float v = (float)c[k] * 65535.0f; /* in single precision, as POV-Ray */
+				d[k] = (float)((unsigned short)(int)v / 65535.0);
+			}
+		}
+	fn_unref(f);
+	struct image *img = image_from_pixels(w, h, color ? 4 : 1, px);
+	if (!img)
+		parse_error_at(p, wat, "out of memory for a %d x %d function image", w, h);
+	return img;
+}
+
 /* IMAGE_BLOCK_BODY:
  *   [BITMAP_TYPE] STRING [gamma (FLOAT | srgb)] [premultiplied BOOL]
  *   { map_type INT | once | interpolate INT | filter (all FLOAT | INT, FLOAT)
  *   | transmit (all FLOAT | INT, FLOAT) | use_alpha | use_index | use_color
  *   | use_colour }
+ *   | function W ',' H '{' FUNCTION_BODY '}' { the same modifiers }
  * BITMAP_TYPE: exr | gif | hdr | iff | jpeg | pgm | png | ppm | sys | tga | tiff */
 void parse_image_mapping(struct parser *p, struct image_mapping *m)
 {
@@ -128,6 +218,17 @@ void parse_image_mapping(struct parser *p, struct image_mapping *m)
 	struct image_mapping lm = *m;
 	int type = -1;
 	const struct token *t = parse_peek(p);
+	if (t->kind == TOK_KEYWORD && t->kw == KW_FUNCTION) {
+		lm.img = function_image(p);
+		int img_slot = parse_own(p, lm.img, unref_image);
+		int entry_slot = -1;
+		image_modifiers(p, &lm, &entry_slot);
+		parse_release(p, img_slot);
+		if (entry_slot >= 0)
+			parse_release(p, entry_slot);
+		*m = lm;
+		return;
+	}
 	if (t->kind == TOK_KEYWORD)
 		for (int i = 0; i < (int)(sizeof file_types / sizeof file_types[0]); i++)
 			if (t->kw == file_types[i].kw)
@@ -175,36 +276,7 @@ void parse_image_mapping(struct parser *p, struct image_mapping *m)
 	lm.gamma = gamma;
 	lm.premultiplied = premultiplied;
 
-	for (;;) {
-		struct srcpos at;
-		if (parse_accept_kw(p, KW_MAP_TYPE)) {
-			int v = parse_int(p, &at);
-			if (v != 0 && v != 1 && v != 2 && v != 5)
-				parse_error_at(p, at, "map_type must be 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), not %d", v);
-			lm.map_type = v;
-		} else if (parse_accept_kw(p, KW_INTERPOLATE)) {
-			int v = parse_int(p, &at);
-			if (v != 2 && v != 3 && v != 4)
-				parse_error_at(p, at, "interpolate must be 2 (bilinear), 3 (bicubic) or 4 (normalized distance), not %d", v);
-			lm.interpolate = v;
-		} else if (parse_accept_kw(p, KW_ONCE)) {
-			lm.once = true;
-		} else if (parse_accept_kw(p, KW_FILTER)) {
-			parse_palette_amount(p, &lm, true, &entry_slot);
-		} else if (parse_accept_kw(p, KW_TRANSMIT)) {
-			parse_palette_amount(p, &lm, false, &entry_slot);
-		} else if (parse_accept_kw(p, KW_USE_ALPHA)) {
-			lm.use_alpha = true;
-		} else if (parse_accept_kw(p, KW_USE_INDEX)) {
-			lm.use_index = true;
-			lm.use_color = false;
-		} else if (parse_accept_kw(p, KW_USE_COLOR) || parse_accept_kw(p, KW_USE_COLOUR)) {
-			lm.use_color = true;
-			lm.use_index = false;
-		} else {
-			break;
-		}
-	}
+	image_modifiers(p, &lm, &entry_slot);
 	/* Handed over: the caller's mapping owns the image and the entries. */
 	if (entry_slot >= 0)
 		parse_release(p, entry_slot);

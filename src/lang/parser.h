@@ -279,6 +279,9 @@ const char *parse_format_float(struct parser *p, double x, int l, int prec);
 /* User functions (func.c): `function [(params)] { body }` after the
  * keyword, and calling one from an expression. */
 struct fn *parse_function(struct parser *p);
+/* The same from the '{' on, with the parameters x, y, z (the body of
+ * image_map { function W, H { ... } }). */
+struct fn *parse_function_body(struct parser *p);
 struct value parse_call_function(struct parser *p, const struct fn *f, struct srcpos at);
 /* Splines (func.c): `spline { ... }` and evaluating S(t). */
 struct spline *parse_spline(struct parser *p);

@@ -129,14 +129,23 @@ static void parse_complex(struct parser *p, double c[2])
 	c[1] = v.v[1];
 }
 
-/* slope_args := VECTOR [',' LO ',' HI] [altitude VECTOR [',' LO ',' HI]] */
+/* slope_args := VECTOR [',' LO ',' HI] [altitude VECTOR [',' LO ',' HI]]
+ *   | point_at VECTOR [',' LO ',' HI] */
 static void parse_slope_args(struct parser *p, struct pattern *pt)
 {
+	bool point_at = parse_accept_kw(p, KW_POINT_AT);
 	pt->vec = parse_vector(p);
+	if (point_at)
+		pt->n[1] = 1;
 	if (parse_accept(p, TOK_COMMA)) {
 		pt->f[0] = parse_float(p);
 		parse_expect(p, TOK_COMMA);
 		pt->f[1] = parse_float(p);
+	}
+	if (point_at) {
+		if (parse_peek(p)->kind == TOK_KEYWORD && parse_peek(p)->kw == KW_ALTITUDE)
+			parse_error(p, "'altitude' cannot be used with 'point_at' in the slope pattern");
+		return;
 	}
 	if (parse_accept_kw(p, KW_ALTITUDE)) {
 		pt->vec2 = parse_vector(p);

@@ -284,18 +284,6 @@ PATTERN_FN(leopard)
 	return s * s;
 }
 
-/* The surface normal carried into pattern space (the inverse transpose of
- * each transformation, last declared first). */
-static vec3 pattern_normal(const struct pattern *pt, vec3 n)
-{
-	for (int i = pt->nops - 1; i >= 0; i--) {
-		const struct pattern_op *op = &pt->ops[i];
-		if (op->kind == POP_TRANSFORM)
-			n = mat_normal(&op->xf.fwd, n);
-	}
-	return v3_norm(n);
-}
-
 /* slope { <Direction> [, lo, hi] [altitude <Altitude> [, lo, hi]] }:
  * pt->vec the direction, pt->vec2 the altitude (zero: none), pt->f[0..1]
  * the slope range, pt->f[2..3] the altitude range (equal: 0 to 1);
@@ -305,18 +293,25 @@ static vec3 pattern_normal(const struct pattern *pt, vec3 n)
  * of the two vectors. */
 PATTERN_FN(slope)
 {
-	vec3 n = pattern_normal(pt, ctx->normal);
+	/* The slope is taken in world space: POV-Ray ignores the pattern's
+	 * transformations for it (measured: slope { y } rotate z*40 is still
+	 * the angle from world y, and point_at's direction is from the world
+	 * point); only the altitude part follows them. */
+	vec3 n = v3_norm(ctx->normal);
 	double dl = v3_len(pt->vec);
 	vec3 dir;
 	if (pt->n[1] == 1) {
-		dir = v3_sub(pt->vec, q);
+		dir = v3_sub(pt->vec, ctx->p);
 		double l = v3_len(dir);
 		dir = l > 0 ? v3_scale(dir, 1.0 / l) : v3(0, 1, 0);
 		dl = 1.0;
 	} else {
 		dir = dl > 0 ? v3_scale(pt->vec, 1.0 / dl) : v3(0, 1, 0);
 	}
-	double s = 0.5 + 0.5 * v3_dot(n, dir);
+	/* linear in the angle (measured: 1 - angle/pi to 1e-5 over a sphere,
+	 * for a direction and for point_at; not 0.5 + 0.5 cos) */
+	double c = v3_dot(n, dir);
+	double s = 1.0 - acos(c > 1 ? 1 : c < -1 ? -1 : c) / PI;
 	double lo = pt->f[0], hi = pt->f[1];
 	if (hi != lo)
 		s = (s - lo) / (hi - lo);

@@ -555,6 +555,51 @@ static void test_parse(void **state)
 	}
 }
 
+/* image_map { function W, H { ... } }: POV-Ray 3.7.0 printed, through
+ * function { pigment { image_map { function ... } } }, 0.29999238 for the
+ * constant 0.3, 0.49997711 for 1.5, 0.75002670 for -0.25, 0.70000762 for
+ * 0.7000076 (16-bit storage by truncation in single precision, wrapping),
+ * and for { x } (4 x 4) at x = 0.125 .. 0.875 the columns 0, 1/3, 2/3, 1;
+ * for { y } at y = 0.125 .. 0.875 the rows 1, 2/3, 1/3, 0 (the function's
+ * y = 0 is the image's top row). */
+static void test_function_image(void **state)
+{
+	(void)state;
+	char msg[2048];
+	static const struct { const char *text; double v; } consts[] = {
+		{"function 2, 2 { 0.3 } }", 0.29999238}, {"function 2, 2 { 1.5 } }", 0.49997711},
+		{"function 2, 2 { -0.25 } }", 0.75002670}, {"function 2, 2 { 0.7000076 } }", 0.70000762},
+		{"function 2, 2 { pattern { function { 0.3 } } } }", 0.29999238},
+	};
+	struct image_mapping m;
+	struct rgbft c;
+	for (size_t i = 0; i < sizeof consts / sizeof consts[0]; i++) {
+		assert_int_equal(parse_block(consts[i].text, &m, msg, sizeof msg), 0);
+		image_map_eval(&m, v3(0.1, 0.1, 0), &c, NULL);
+		assert_near(c.r, consts[i].v, 1e-7);
+		assert_near(c.t, 0, 0);
+		clear(&m);
+	}
+	assert_int_equal(parse_block("function 4, 4 { x } }", &m, msg, sizeof msg), 0);
+	assert_int_equal(m.img->width, 4);
+	for (int i = 0; i < 4; i++) {
+		image_map_eval(&m, v3((i + 0.5) / 4, 0.5, 0), &c, NULL);
+		assert_near(c.r, i / 3.0, 1e-7);
+	}
+	clear(&m);
+	assert_int_equal(parse_block("function 4, 4 { y } interpolate 2 }", &m, msg, sizeof msg), 0);
+	assert_int_equal(m.interpolate, 2);
+	m.interpolate = 0;
+	for (int i = 0; i < 4; i++) {
+		image_map_eval(&m, v3(0.5, (i + 0.5) / 4, 0), &c, NULL);
+		assert_near(c.r, 1 - i / 3.0, 1e-7);
+	}
+	clear(&m);
+	assert_int_equal(parse_block("function 0, 2 { x } }", &m, msg, sizeof msg), 1);
+	if (!strstr(msg, "t.pov:1:10: error: a function image's width must be at least 1, not 0"))
+		fail_msg("got:\n%s", msg);
+}
+
 int main(void)
 {
 	setup_paths();
@@ -564,6 +609,7 @@ int main(void)
 		cmocka_unit_test(test_alpha),             cmocka_unit_test(test_palette),
 		cmocka_unit_test(test_pattern_value),     cmocka_unit_test(test_cache),
 		cmocka_unit_test(test_parse),               cmocka_unit_test(test_working_gamma),
+		cmocka_unit_test(test_function_image),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

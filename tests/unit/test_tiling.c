@@ -3,7 +3,8 @@
  * The values at three points for each tiling were printed by POV-Ray 3.7.0:
  *   #declare G = function { pigment { tiling N color_map { [0 rgb 0] [1 rgb 1] } } }
  *   #debug str(G(x, 0, z).red, 0, 9)
- * They went through POV-Ray's single-precision colours, hence the
+ * (tilings 26 and 27 also far from the origin, where an aperiodic tiling
+ * could drift). They went through POV-Ray's single-precision colours, hence the
  * tolerance of 1e-6. The hand-derived cases check the rule itself: tiling 1
  * is unit squares, 0 at a centre and 1 on an edge, rising linearly between
  * (the bevel is the square's inradius 0.5); y is ignored. */
@@ -48,6 +49,10 @@ static const struct tcase cases[] = {
 	{22, {{0.3137, 0.7291, 0.279304266}, {-1.8412, 2.2719, 0.666666687}, {3.1071, -2.6533, 0.666666687}}},
 	{23, {{0.3137, 0.7291, 0.180600002}, {-1.8412, 2.2719, 0.666666985}, {3.1071, -2.6533, 0.210092947}}},
 	{24, {{0.3137, 0.7291, 0.108360000}, {-1.8412, 2.2719, 0.800000191}, {3.1071, -2.6533, 0.126055777}}},
+	{26, {{0.3137, 0.7291, 0.105704799}, {-1.8412, 2.2719, 0.918031156}, {3.1071, -2.6533, 0.000000000}}},
+	{26, {{41.37, -28.91, 0.000000000}, {-77.3, 63.2, 0.312077105}, {0, 0.3, 0.293267638}}},
+	{27, {{0.3137, 0.7291, 0.374729484}, {-1.8412, 2.2719, 0.729970336}, {3.1071, -2.6533, 0.219758824}}},
+	{27, {{41.37, -28.91, 0.911266685}, {-77.3, 63.2, 0.327763677}, {0, 0.3, 0.341006637}}},
 };
 
 static double tiling_value(int n, double x, double y, double z)
