@@ -256,6 +256,8 @@ void parse_read(struct parser *p, struct srcpos at)
 		if (f->pos >= f->ntoks || f->toks[f->pos].kind == TOK_EOF) {
 			/* The end: the file's identifier goes away. */
 			while (!parse_accept(p, TOK_RPAREN)) {
+				if (parse_is(p, TOK_EOF)) /* found by fuzzing: it spun here */
+					parse_expected(p, "')' to close #read");
 				parse_advance(p);
 			}
 			struct value *fv = parse_lookup(p, fname);
