@@ -7,6 +7,7 @@
 #include "image/image.h"
 #include "scene/fn.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -192,8 +193,11 @@ static struct image *function_image(struct parser *p)
 			}
 			float *d = &px[((size_t)j * w + i) * 4];
 			for (int k = 0; k < 4; k++) {
-				float v = (float)c[k] * 65535.0f; /* in single precision, as POV-Ray */
-				d[k] = (float)((unsigned short)(int)v / 65535.0);
+				/* in single precision, as POV-Ray; the wrap of (unsigned
+				 * short)(int) done without C's undefined overflow */
+				double v = trunc((double)((float)c[k] * 65535.0f));
+				v = isfinite(v) ? v - 65536.0 * floor(v / 65536.0) : 0;
+				d[k] = (float)(v / 65535.0);
 			}
 		}
 	fn_unref(f);

@@ -12,7 +12,6 @@
 #include "pattern/noise_table.h"
 
 #include <math.h>
-#include <stdlib.h>
 
 /* The generator a pattern uses: its own, else the scene's, else 2. */
 static int gen_of(const struct pattern *pt, const struct pattern_ctx *ctx)
@@ -156,12 +155,17 @@ PATTERN_FN(waves)
 
 /* ---- cells, crackle ---- */
 
-/* The lattice hash of unit cube (i, j, k), as POV-Ray's cells and crackle
- * take it: noise_table.c's permutation on the raw coordinates (no offset). */
-static int cube_hash(int i, int j, int k)
+/* The lattice hash of unit cube (i, j, k) (integral values), as POV-Ray's
+ * cells and crackle take it: noise_table.c's permutation on the raw
+ * coordinates, each taken modulo 4096 (no offset, unlike the noise). */
+static int wrap12(double v)
 {
-	const int m = NOISE_HASH_SIZE - 1;
-	return noise_hash[noise_hash[noise_hash[i & m] ^ (j & m)] ^ (k & m)];
+	return (int)(v - 4096.0 * floor(v / 4096.0));
+}
+
+static int cube_hash(double i, double j, double k)
+{
+	return noise_hash[noise_hash[noise_hash[wrap12(i)] ^ wrap12(j)] ^ wrap12(k)];
 }
 
 static double cell_rand(int h)
@@ -170,7 +174,7 @@ static double cell_rand(int h)
 }
 
 /* The feature point of unit cube (i, j, k) (cell_table.h). */
-static vec3 cell_point(int i, int j, int k)
+static vec3 cell_point(double i, double j, double k)
 {
 	int h = cube_hash(i, j, k);
 	return v3(i + cell_rand(h), j + cell_rand(h + 1), k + cell_rand(h + 2));
@@ -183,13 +187,9 @@ PATTERN_FN(cells)
 {
 	(void)pt; (void)ctx;
 	const double eps = 1e-10;
-	return cell_rand(cube_hash((int)floor(q.x + eps), (int)floor(q.y + eps), (int)floor(q.z + eps)));
+	return cell_rand(cube_hash(floor(q.x + eps), floor(q.y + eps), floor(q.z + eps)));
 }
 
-/* The distance of d in Minkowski metric m, the offset o taken as a fourth
- * coordinate (the manual: "displace the pattern ... along a fourth
- * dimension"; measured: with metric 2 and offset o POV-Ray's F1 is
- * sqrt(F1^2 + o^2)). */
 static double metric_dist(vec3 d, double m, double o)
 {
 	if (m == 2 || m <= 0)
@@ -222,7 +222,7 @@ static void nearest_add(struct nearest *nr, vec3 c, double d)
 }
 
 /* How far v lies outside [lo, lo + 1]. */
-static double gap(double v, int lo)
+static double gap(double v, double lo)
 {
 	return v < lo ? lo - v : v > lo + 1 ? v - (lo + 1) : 0;
 }
@@ -233,19 +233,19 @@ static double gap(double v, int lo)
  * points for every metric, not with the 27 cubes alone). */
 static void crackle_search(vec3 q, double metric, double offset, struct nearest *nr)
 {
-	int ci = (int)floor(q.x), cj = (int)floor(q.y), ck = (int)floor(q.z);
+	double ci = floor(q.x), cj = floor(q.y), ck = floor(q.z);
 	nr->d[0] = nr->d[1] = nr->d[2] = INFINITY;
 	nr->point = q;
-	for (int i = ci - 1; i <= ci + 1; i++)
-		for (int j = cj - 1; j <= cj + 1; j++)
-			for (int k = ck - 1; k <= ck + 1; k++) {
+	for (double i = ci - 1; i <= ci + 1; i++)
+		for (double j = cj - 1; j <= cj + 1; j++)
+			for (double k = ck - 1; k <= ck + 1; k++) {
 				vec3 c = cell_point(i, j, k);
 				nearest_add(nr, c, metric_dist(v3_sub(q, c), metric, offset));
 			}
-	for (int i = ci - 2; i <= ci + 2; i++)
-		for (int j = cj - 2; j <= cj + 2; j++)
-			for (int k = ck - 2; k <= ck + 2; k++) {
-				if (abs(i - ci) < 2 && abs(j - cj) < 2 && abs(k - ck) < 2)
+	for (double i = ci - 2; i <= ci + 2; i++)
+		for (double j = cj - 2; j <= cj + 2; j++)
+			for (double k = ck - 2; k <= ck + 2; k++) {
+				if (fabs(i - ci) < 2 && fabs(j - cj) < 2 && fabs(k - ck) < 2)
 					continue;
 				vec3 g = v3(gap(q.x, i), gap(q.y, j), gap(q.z, k));
 				if (metric_dist(g, metric, offset) >= nr->d[2])

@@ -58,9 +58,12 @@ static const struct pavement_layout *find_layout(int sides, int tiles, int patte
 static unsigned cell_mask(const struct pavement_layout *l, double i, double j, int d)
 {
 	double k = floor(j / l->r);
-	int jj = (int)(j - k * l->r);
-	double x = i - k * l->q;
-	int ii = (int)(x - floor(x / l->p) * l->p);
+	double fj = j - k * l->r, x = i - k * l->q;
+	double fi = x - floor(x / l->p) * l->p;
+	int jj = fj >= 0 && fj < l->r ? (int)fj : -1;
+	int ii = fi >= 0 && fi < l->p ? (int)fi : -1;
+	if (jj < 0 || jj >= l->r || ii < 0 || ii >= l->p)
+		jj = ii = 0; /* beyond double precision's reach (|x| > 2^52) */
 	int idx = jj * l->p + ii;
 	return l->mask[l->sides == 3 ? 2 * idx + d : idx];
 }
