@@ -421,8 +421,43 @@ static rgb reflection_color(const struct finish *f, rgb pig, double cv, double n
 	return r;
 }
 
+/* The relative ior (beyond / before) fresnel reflection uses at s. It is
+ * not always the one refraction uses (n1 / n2 of transmit(): the
+ * interiors on top of the medium before and after the crossing). As
+ * measured in POV-Ray 3.7 at normal incidence on nested and overlapping
+ * spheres: entering an interior, the ray comes from the top one of its
+ * medium (or air); leaving one, it goes from that interior's ior into air
+ * if it was the only one, else into the top one of the medium before the
+ * crossing, which is the one left itself when the objects are nested: a
+ * sphere inside another (or inside a plane around the camera) reflects
+ * nothing by fresnel where the ray leaves it. Three spheres overlapping
+ * in a row (ior 1.5, 2, 2.5), one reflecting at a time, give 0.1025,
+ * 0.0327 and 0.196: the first leaves into the third, the second into the
+ * third. */
+static double fresnel_ior(const struct surface *s)
+{
+	const struct medium *m = s->med;
+	if (!s->leaving)
+		return s->in->ior / medium_ior(m);
+	return (m->n == 1 ? 1.0 : m->in[m->n - 1]->ior) / s->in->ior;
+}
+
+/* Is the transmitted ray through s, across normal n into medium `after`,
+ * totally reflected? Dispersed rays are not: each sample of the spectrum
+ * decides for itself in transmit(). */
+static bool total_internal(const struct prepared *p, const struct surface *s, vec3 n, const struct medium *after)
+{
+	double n1 = medium_ior(s->med), n2 = medium_ior(after);
+	if (n1 == n2 || ((p->features & FEAT_DISPERSION) && s->in->dispersion != 1))
+		return false;
+	vec3 d;
+	return !shade_refract(s->dir, n, n1 / n2, &d);
+}
+
 /* A ray of the transmitted light through s: refracted by the relative ior
- * (eta = n1 / n2) or, under total internal reflection, mirrored. */
+ * (eta = n1 / n2); a dispersed sample under total internal reflection is
+ * mirrored. (The caller handles total internal reflection of the whole
+ * ray, total_internal.) */
 static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double weight, const struct medium *after)
 {
 	const struct prepared *p = tr->p;
@@ -452,10 +487,8 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 		return sum;
 	}
 	vec3 d = s->dir;
-	if (n1 != n2 && !shade_refract(s->dir, n, n1 / n2, &d)) {
-		struct ray r = {v3_madd(s->pt, n, s->eps), v3_reflect(s->dir, n)};
-		return trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any);
-	}
+	if (n1 != n2)
+		shade_refract(s->dir, n, n1 / n2, &d);
 	struct ray r = {v3_madd(s->pt, s->n, -s->eps), d};
 	/* A ray that passes straight through (no change of ior) stays on its
 	 * trace level, as in POV-Ray 3.7 (measured: eight clear faces in a row
@@ -480,7 +513,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	double n_rel = 1;
 	if (feat & FEAT_MEDIA) {
 		medium_cross(s->med, s->in, &after);
-		n_rel = medium_ior(&after) / medium_ior(s->med);
+		n_rel = fresnel_ior(s);
 	}
 	for (const struct texture *l = t; l && nl < MAX_LAYERS; l = l->next) {
 		const struct texture *pl = plain_of(l, s);
@@ -576,6 +609,21 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 
 	if (s->depth < p->max_depth) {
 		double bail = sc->gs.adc_bailout;
+		/* Quality below 6 transmits no ray (prepare_quality). */
+		bool transmits = (feat & FEAT_TRANSPARENCY) && p->quality >= 6 && rgb_max(filt) > 0 &&
+		                 weight * rgb_max(filt) >= bail;
+		if (transmits && total_internal(p, s, L[0].n, &after)) {
+			/* Total internal reflection: POV-Ray then traces the mirrored
+			 * ray alone and adds it whole, neither filtered by the pigment
+			 * nor joined by the finish's reflection (measured from inside
+			 * a glass half-space: the mirrored background comes back at
+			 * full strength for filter 0.005 to 1, transmit 0.5, any
+			 * pigment colour, reflection 0.3 with exponent 0.5, fresnel
+			 * reflection, with or without conserve_energy). */
+			struct ray r = {v3_madd(s->pt, L[0].n, s->eps), v3_reflect(s->dir, L[0].n)};
+			bool any;
+			return rgb_add(col, trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any));
+		}
 		for (int i = 0; i < nl; i++) {
 			const struct layer *y = &L[i];
 			double w = weight * rgb_max(y->refl);
@@ -591,9 +639,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				rc = rgb_make(pow(fmax(rc.r, 0), 1 / e), pow(fmax(rc.g, 0), 1 / e), pow(fmax(rc.b, 0), 1 / e));
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
-		/* Quality below 6 transmits no ray (prepare_quality). */
-		if ((feat & FEAT_TRANSPARENCY) && p->quality >= 6 && weight * rgb_max(filt) >= bail &&
-		    rgb_max(filt) > 0)
+		if (transmits)
 			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
 	}
 	return col;
