@@ -135,6 +135,7 @@ struct surface {
 	const struct medium *med;    /* the interiors the ray travels in */
 	const struct interior *in;   /* the object's interior (never NULL with FEAT_MEDIA) */
 	bool leaving;                /* the ray leaves that interior here */
+	double dist;                 /* the length of the ray that reached pt */
 	int depth;
 };
 
@@ -442,6 +443,21 @@ static double fresnel_ior(const struct surface *s)
 	return (m->n == 1 ? 1.0 : m->in[m->n - 1]->ior) / s->in->ior;
 }
 
+/* What the fading of s's interior leaves of the light transmitted through
+ * s: POV-Ray 3.7 fades only there, where a ray leaves a fading interior,
+ * by the length of the ray that reached the surface (measured in glass
+ * slabs seen head-on: a clear sphere inside the slab, or a mirror at its
+ * back, leaves only the slab's last stretch faded; an opaque object inside
+ * it, the reflections inside it, and a ray that escapes from it to the
+ * background are not faded at all). */
+static rgb exit_fade(const struct prepared *p, const struct surface *s)
+{
+	const struct interior *in = s->in;
+	if (!(p->features & FEAT_FADE) || !s->leaving || in->fade_distance <= 0 || in->fade_power <= 0)
+		return rgb_make(1, 1, 1);
+	return shade_fade(in, s->dist);
+}
+
 /* Is the transmitted ray through s, across normal n into medium `after`,
  * totally reflected? Dispersed rays are not: each sample of the spectrum
  * decides for itself in transmit(). */
@@ -622,7 +638,8 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			 * reflection, with or without conserve_energy). */
 			struct ray r = {v3_madd(s->pt, L[0].n, s->eps), v3_reflect(s->dir, L[0].n)};
 			bool any;
-			return rgb_add(col, trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any));
+			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any);
+			return rgb_add(col, rgb_mul(c, exit_fade(p, s)));
 		}
 		for (int i = 0; i < nl; i++) {
 			const struct layer *y = &L[i];
@@ -639,8 +656,10 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				rc = rgb_make(pow(fmax(rc.r, 0), 1 / e), pow(fmax(rc.g, 0), 1 / e), pow(fmax(rc.b, 0), 1 / e));
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
-		if (transmits)
-			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
+		if (transmits) {
+			rgb c = transmit(tr, s, L[0].n, weight * rgb_max(filt), &after);
+			col = rgb_add(col, rgb_mul(rgb_mul(filt, c), exit_fade(p, s)));
+		}
 	}
 	return col;
 }
@@ -685,12 +704,6 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 	tr->stats.rays[kind]++;
 	struct hit h;
 	unsigned skip = kind == RAY_CAMERA ? OBJ_NO_IMAGE : kind == RAY_REFLECTED ? OBJ_NO_REFLECTION : 0;
-	const struct interior *fading = NULL;
-	if ((p->features & FEAT_FADE) && med && med->n) {
-		const struct interior *in = med->in[med->n - 1];
-		if (in->fade_distance > 0 && in->fade_power > 0)
-			fading = in;
-	}
 	if (!trace_closest(p, r, 0, INFINITY, skip, &h)) {
 		vec3 dir = v3_norm(r->dir);
 		struct rgbft bg = atmos_escape(p, dir);
@@ -699,12 +712,12 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		/* The pixel counts as opaque when less than half of it is
 		 * see-through (POV-Ray's alpha is 1 - bg.t). */
 		*hit_anything = bg.t < 0.5;
-		return fading ? rgb_mul(rgb_of(bg), shade_fade(fading, INFINITY)) : rgb_of(bg);
+		return rgb_of(bg);
 	}
 	*hit_anything = true;
 	if (p->signature)
 		return signature_color(h.obj->id);
-	struct surface s = {.obj = h.obj, .med = med, .depth = depth};
+	struct surface s = {.obj = h.obj, .med = med, .depth = depth, .dist = h.t * v3_len(r->dir)};
 	s.dir = v3_norm(r->dir);
 	s.pt = v3_madd(r->org, r->dir, h.t);
 	s.n = object_normal(h.obj, s.pt, &h);
@@ -722,8 +735,6 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 	surface_contexts(&s, &h, (p->features & FEAT_UV) != 0, &p->scene->gs);
 	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
 	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
-	if (fading)
-		col = rgb_mul(col, shade_fade(fading, h.t * v3_len(r->dir)));
 	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
 		double len = v3_len(r->dir);
 		struct rgbft c = {col.r, col.g, col.b, 0, 0};
