@@ -635,10 +635,12 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			 * a glass half-space: the mirrored background comes back at
 			 * full strength for filter 0.005 to 1, transmit 0.5, any
 			 * pigment colour, reflection 0.3 with exponent 0.5, fresnel
-			 * reflection, with or without conserve_energy). */
+			 * reflection, with or without conserve_energy). Its weight
+			 * for adc_bailout is the transmitted ray's (measured with a
+			 * mirror behind the reflection and adc_bailout 0.1 to 0.3). */
 			struct ray r = {v3_madd(s->pt, L[0].n, s->eps), v3_reflect(s->dir, L[0].n)};
 			bool any;
-			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, s->med, &any);
+			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight * rgb_max(filt), s->med, &any);
 			return rgb_add(col, rgb_mul(c, exit_fade(p, s)));
 		}
 		for (int i = 0; i < nl; i++) {
