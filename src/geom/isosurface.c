@@ -14,7 +14,11 @@
  * else it is halved and the nearer half searched first. Lengths are
  * distances along the ray. A ray that enters the container where f < T
  * (and the isosurface is not open) hits the container there, and one that
- * leaves it inside the solid hits it where it leaves.
+ * leaves it inside the solid hits it where it leaves. A ray that starts
+ * inside the container begins its search 4.4 accuracies along (POV-Ray
+ * misses crossings closer than 4.25 to 5 accuracies, found the same for
+ * accuracies 0.001 and 0.01): the rays sent from a hit, which is up to one
+ * accuracy inside, do not meet the surface they leave.
  *
  * The normal is POV-Ray's: forward differences of f with the step A,
  * (f(p + A x) - f(p), ...), pointing to where f grows; the container's own
@@ -161,6 +165,13 @@ static void iso_hits(const struct isosurface *I, const struct ray *r, double tmi
 		return;
 	struct search S = {.I = I, .o = r->org, .d = r->dir, .len = v3_len(r->dir), .gmax = 0};
 	S.g = I->evaluate ? I->eval[0] : I->max_gradient;
+	if (!enters) {
+		/* A ray that starts in the container skips its first 4.4
+		 * accuracies (see the file comment). */
+		a += 4.4 * I->accuracy / S.len;
+		if (!(a < b))
+			return;
+	}
 	double fa = fval(I, v3_madd(S.o, S.d, a));
 	int count = 0;
 	if (fa < 0) {

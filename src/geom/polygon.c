@@ -126,8 +126,10 @@ static void add_edge(struct polygon *P, const double *a, const double *b)
 	e[3] = b[1];
 }
 
-struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *closed_last)
+struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *closed_last, bool *nonplanar)
 {
+	if (nonplanar)
+		*nonplanar = false;
 	if (closed_last)
 		*closed_last = false;
 	/* The plane: the first three points not on one line. */
@@ -135,7 +137,7 @@ struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *clos
 	for (int i = 1; i + 1 < n && !(v3_dot(nrm, nrm) > 0); i++)
 		for (int j = i + 1; j < n && !(v3_dot(nrm, nrm) > 0); j++)
 			nrm = v3_cross(v3_sub(pts[i], pts[0]), v3_sub(pts[j], pts[0]));
-	bool flat = !(v3_dot(nrm, nrm) > 0) || !isfinite(v3_dot(nrm, nrm));
+	bool collinear = !(v3_dot(nrm, nrm) > 0) || !isfinite(v3_dot(nrm, nrm)), flat = collinear;
 	if (flat)
 		nrm = v3(0, 0, 1); /* on one line: never hit, as in POV-Ray */
 	struct polygon *P = calloc(1, sizeof *P);
@@ -143,12 +145,24 @@ struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *clos
 	object_init(&P->base, &polygon_ops, pos);
 	P->n = v3_norm(nrm);
 	P->org = pts[0];
+	/* Points off the plane: POV-Ray then never shows the polygon, with no
+	 * message (measured: a unit square with a corner moved 1e-9 off its
+	 * plane is never hit, 1e-10 is; for a square ten times the size the
+	 * limits are ten times smaller). */
+	double scale = sqrt(v3_len(nrm));
+	for (int i = 0; i < n && !flat; i++)
+		if (fabs(v3_dot(v3_sub(pts[i], pts[0]), P->n)) * scale > 5e-10)
+			flat = true;
+	if (flat)
+		P->n = v3(0, 0, 1);
+	if (nonplanar)
+		*nonplanar = flat && !collinear;
 	/* u along the first edge that has a length, v = n x u. */
 	vec3 u = v3(0, 0, 0);
 	for (int i = 1; i < n && !(v3_dot(u, u) > 0); i++)
 		u = v3_sub(pts[i], pts[0]);
 	u = v3_sub(u, v3_scale(P->n, v3_dot(u, P->n)));
-	P->ax_u = v3_norm(u);
+	P->ax_u = flat ? v3(1, 0, 0) : v3_norm(u);
 	P->ax_v = v3_cross(P->n, P->ax_u);
 
 	P->edge = malloc((size_t)(n + 1) * sizeof *P->edge);

@@ -14,9 +14,10 @@ struct fn;
  * sub-polygons as POV-Ray does (a sub-polygon ends at the point equal to
  * its first; the last one is closed if it is not: *closed_last, may be
  * NULL, is set then). The plane is that of the first three points that
- * are not on one line; points off it are projected onto it. When every
- * point is on one line the polygon is never hit (as in POV-Ray). */
-struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *closed_last);
+ * are not on one line. When every point is on one line, or some point is
+ * off that plane (*nonplanar is set then; may be NULL), the polygon is
+ * never hit, as in POV-Ray. */
+struct object *polygon_new(const vec3 *pts, int n, struct srcpos pos, bool *closed_last, bool *nonplanar);
 
 /* lathe { spline n, points }: the 2-D curve through points (r, y) turned
  * about the y axis. The pieces follow the same rules as POV-Ray's:

@@ -98,8 +98,10 @@ static struct object *parse_polygon(struct parser *p, struct srcpos at)
 			parse_error_at(p, vat, "a polygon point is a 2-D or 3-D vector, found %s", vector_kind(&v));
 		pp->pos[i] = vat;
 	}
-	bool closed_last;
-	struct object *o = polygon_new(pt, n, at, &closed_last);
+	bool closed_last, nonplanar;
+	struct object *o = polygon_new(pt, n, at, &closed_last, &nonplanar);
+	if (nonplanar)
+		parse_warning_at(p, at, "the points of this polygon are not in one plane: it is never seen (as in POV-Ray)");
 	if (closed_last)
 		parse_warning_at(p, at, "the last sub-polygon of this polygon is not closed: closing it");
 	parse_release(p, slot);
