@@ -2,6 +2,7 @@
  * write, with timings and statistics. Exit status: 0 done, 1 error,
  * 2 interrupted. */
 #include "config.h"
+#include "geom/shapes2.h"
 
 #include "image/framebuffer.h"
 #include "image/output.h"
@@ -125,6 +126,30 @@ static void print_stats(FILE *out, const struct stats *st, unsigned features, un
  * script installed beside lucent, with LUCENT naming this program: from
  * argv[0]'s folder when it has one, else through PATH. Returns only on
  * failure. */
+/* POV-Ray's warnings after the render about each isosurface (in o and
+ * below it) whose searches met a gradient above its max_gradient (it may
+ * have holes) or more than 0.5 below it (it renders slower than it could;
+ * measured: 0.327 found against 0.85 given warns, about 0.33 against 0.8
+ * does not, 0.739 against 1.3 and 2.287 against 3 warn). */
+static void warn_gradients(struct diag *d, struct object *o)
+{
+	double found, given;
+	if (isosurface_gradient_report(o, &found, &given)) {
+		if (found > given)
+			diag_report(d, DIAG_WARNING, o->pos,
+			            "the largest gradient found was %.3f, but max_gradient of the isosurface is %.3f: "
+			            "it may have holes; raise max_gradient", found, given);
+		else if (found > 0 && given - found > 0.5)
+			diag_report(d, DIAG_WARNING, o->pos,
+			            "the largest gradient found was %.3f, but max_gradient of the isosurface is %.3f: "
+			            "lower max_gradient to render it faster", found, given);
+	}
+	struct object **kids;
+	size_t n = o->ops->children ? o->ops->children(o, &kids) : 0;
+	for (size_t i = 0; i < n; i++)
+		warn_gradients(d, kids[i]);
+}
+
 static int run_regress(char **argv)
 {
 	static char path[4096];
@@ -317,6 +342,8 @@ int main(int argc, char **argv)
 		status = 2;
 		goto done;
 	}
+	for (size_t i = 0; i < scene->nobjects; i++)
+		warn_gradients(&diag, scene->objects[i]);
 	/* The scene is no longer needed: free it before the image module is
 	 * loaded, so that the two never take memory at the same time. */
 	unsigned features = prep->features;

@@ -197,7 +197,8 @@ static struct value f_trace(struct parser *p, struct srcpos at)
 	vec3 pt = v3(0, 0, 0), n = v3(0, 0, 0);
 	if (v3_len(dir) > 0 && object_intersect(o.obj, &r, 0, INFINITY, &h)) {
 		pt = v3_madd(from, dir, h.t);
-		n = object_normal(o.obj, pt, &h);
+		/* The normal of the primitive hit (for CSG, the leaf). */
+		n = object_normal(h.obj ? h.obj : o.obj, pt, &h);
 		if (v3_dot(n, dir) > 0)
 			n = v3_neg(n);
 	}

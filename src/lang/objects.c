@@ -710,7 +710,7 @@ bool parse_is_object_start(enum kw k)
 	case KW_LIGHT_GROUP:
 		return true;
 	default:
-		return false;
+		return parse_is_object2(k);
 	}
 }
 
@@ -874,15 +874,19 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	case KW_STURM: {
 		bool is_open = tk->kw == KW_OPEN;
 		enum kw k = s->args ? s->args->kw : KW_OBJECT;
-		bool fits = is_open ? (k == KW_CYLINDER || k == KW_CONE || k == KW_PRISM)
-		                    : (k == KW_TORUS || k == KW_CUBIC || k == KW_QUARTIC || k == KW_POLY || k == KW_PRISM);
+		bool fits = is_open ? (k == KW_CYLINDER || k == KW_CONE || k == KW_PRISM || k == KW_SOR)
+		                    : (k == KW_TORUS || k == KW_CUBIC || k == KW_QUARTIC || k == KW_POLY || k == KW_PRISM ||
+		                       k == KW_LATHE || k == KW_SOR);
 		if (!fits)
 			parse_error_at(p, at, "'%s' applies to %s only", is_open ? "open" : "sturm",
-			               is_open ? "cylinder, cone and prism" : "torus, cubic, quartic, poly and prism");
+			               is_open ? "cylinder, cone, prism and sor (and inside an isosurface)"
+			                       : "torus, cubic, quartic, poly, prism, lathe and sor");
 		parse_advance(p);
 		bool on = true;
 		if (parse_starts_expression(p))
 			on = parse_float(p) != 0;
+		if (parse_object2_flag(o, k, is_open, on))
+			return true;
 		if (k == KW_PRISM) {
 			/* The prism's points are not kept: set it in place. */
 			if (is_open)
@@ -958,6 +962,15 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		args.kw = k;
 		s.args = &args;
 		s.o = parse_prism(p, at);
+		break;
+	case KW_POLYGON:
+	case KW_LATHE:
+	case KW_SOR:
+	case KW_ISOSURFACE:
+		memset(&args, 0, sizeof args);
+		args.kw = k;
+		s.args = &args;
+		s.o = parse_object2(p, k, at);
 		break;
 	case KW_MESH:
 	case KW_MESH2:

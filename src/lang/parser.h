@@ -380,6 +380,12 @@ bool parse_is_object_start(enum kw k);
  * #default texture to what has none (declared objects get it when they
  * are placed). The caller owns the result. */
 struct object *parse_object(struct parser *p, bool scene_level);
+/* polygon, lathe, sor and isosurface (objects2.c): is k one of them; the
+ * statement's arguments after its '{' (the caller owns the result); and
+ * its `open` or `sturm` modifier (false if k takes no such modifier). */
+bool parse_is_object2(enum kw k);
+struct object *parse_object2(struct parser *p, enum kw k, struct srcpos at);
+bool parse_object2_flag(struct object *o, enum kw k, bool is_open, bool on);
 /* A transformation (translate, rotate, scale, matrix, transform) at the
  * current token into *out; false if there is none. */
 bool parse_transform_item(struct parser *p, struct xform *out);
