@@ -458,8 +458,9 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	struct token lp = parse_raw(p);
 	if (lp.kind != TOK_LPAREN)
 		raw_expected(p, &lp, "'(' after the macro name");
-	struct symtab *locals = sym_new();
-	sym_track(locals, &p->bindgen);
+	struct symtab *locals = p->spare_locals ? p->spare_locals : sym_new();
+	p->spare_locals = NULL;
+	sym_track(locals, &p->bindgen, &p->lookgen);
 	int slot = parse_own(p, locals, (void (*)(void *))sym_free);
 	int n = 0;
 	struct frame *f = top(p);
@@ -495,9 +496,15 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 				}
 			}
 			if (!byref) {
-				/* Inside the call's parentheses everything binds. */
+				/* Inside the call's parentheses everything binds. A
+				 * numeric argument read before is run from its
+				 * compiled form (exprcache.h) without parse_rvalue's
+				 * tests for scene items: only an expression was ever
+				 * compiled at its first token. */
 				bool rel = parse_set_rel(p, true);
-				v = parse_rvalue(p);
+				struct exprcache_ticket tk;
+				if (!exprcache_try(p, &v, &tk))
+					v = parse_rvalue(p);
 				p->rel_ok = rel;
 			}
 			if (n < m->nparams)
@@ -558,6 +565,8 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	mf->macro = m->name;
 	mf->locals = locals;
 	mf->nconds = p->nconds;
+	/* The parameters now hide any other bindings of their names. */
+	sym_touch(locals);
 }
 
 /* ---- #declare, #local, #undef ---- */
