@@ -44,12 +44,20 @@ static double inner_float(struct parser *p)
 	return v;
 }
 
-/* '(' FLOAT ')', reading nothing after the ')'. */
+/* '(' FLOAT ')', reading nothing after the ')'. A condition read before
+ * (a #while's, every iteration) runs whole from its compiled form,
+ * parentheses included. */
 static double paren_float(struct parser *p)
 {
+	double v;
+	struct exprcache_ticket tk;
+	if (exprcache_try_float(p, &v, &tk))
+		return v;
 	parse_expect(p, TOK_LPAREN);
-	double v = inner_float(p);
+	v = inner_float(p);
 	parse_expect(p, TOK_RPAREN);
+	struct value r = {.kind = VAL_FLOAT, .n = 1, .v = {v}};
+	exprcache_record(p, &tk, &r);
 	return v;
 }
 

@@ -52,9 +52,9 @@ struct xinstr {
 	const struct math_fn *fn;
 	double kv[5];                /* X_CONST */
 	int kn;
-	const struct value *bound;   /* X_VAR: the binding found when p->lookgen was
-	                              * (gen, ngen) for name's bucket */
-	unsigned long gen, ngen;
+	const struct value *bound;   /* X_VAR: the binding found when name's bucket
+	                              * in p->lookgen was at generation gen */
+	unsigned long gen;
 	uint16_t bucket;             /* X_VAR: sym_gen_bucket(name) */
 };
 
@@ -63,8 +63,8 @@ enum xstate { XS_COMPILED, XS_NO };
 struct xentry {
 	const struct token *key;     /* the expression's first token */
 	uint8_t state;
-	bool rel_ok;                 /* the context it was compiled in */
-	bool operand;                /* read as an operand (exprcache_try_operand) */
+	uint8_t ctx;                 /* the context it was compiled in: rel_ok, and 2
+	                              * when read as an operand (exprcache_try_operand) */
 	uint32_t len;                /* its tokens */
 	struct xinstr *code;
 	int ncode;
@@ -501,8 +501,7 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 	e->ncode = c.ncode;
 	e->depth = c.depth;
 	e->len = n;
-	e->rel_ok = rel;
-	e->operand = operand;
+	e->ctx = (uint8_t)(rel | operand << 1);
 	/* A vector literal at the very end (a colour keyword may follow)
 	 * takes the floats its components left on the stack: run_scalar
 	 * gathers them. Everything before must be float operations. */
@@ -604,12 +603,11 @@ enum { XRAND_UNDO = 32 };
 static inline const struct value *var_value(struct parser *p, struct xinstr *in)
 {
 	const struct value *v = in->bound;
-	if (v && in->gen == p->lookgen.all && in->ngen == p->lookgen.name[in->bucket])
+	if (v && in->gen == p->lookgen.name[in->bucket])
 		return v;
 	v = parse_binding(p, in->name);
 	in->bound = v && v->kind != VAL_ALIAS ? v : NULL;
-	in->gen = p->lookgen.all;
-	in->ngen = p->lookgen.name[in->bucket];
+	in->gen = p->lookgen.name[in->bucket];
 	if (v && v->kind == VAL_ALIAS)
 		v = parse_lookup(p, in->name);
 	return v;
@@ -915,7 +913,7 @@ static inline __attribute__((always_inline)) struct xentry *ready(struct parser 
 		tk->operand = operand;
 		return NULL;
 	}
-	if (e->state != XS_COMPILED || e->rel_ok != p->rel_ok || e->operand != operand || (size_t)i + e->len > f->end)
+	if (e->state != XS_COMPILED || e->ctx != (p->rel_ok | operand << 1) || (size_t)i + e->len > f->end)
 		return NULL;
 	if ((size_t)i + e->len == f->end && !ends_in_caller(p))
 		return NULL;

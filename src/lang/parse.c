@@ -510,8 +510,8 @@ struct value *parse_declare_slot_find(struct parser *p, const struct token *site
 	}
 	c->site = site;
 	c->slot = v;
-	c->gen = local ? p->bindgen : p->lookgen.all;
-	c->ngen = p->lookgen.name[sym_gen_bucket(name)];
+	c->bucket = sym_gen_bucket(name);
+	c->gen = local ? p->bindgen : p->lookgen.name[c->bucket];
 	c->local = local;
 	return v;
 }

@@ -101,8 +101,8 @@ struct parser {
 	                              * frame is entered or left: pointers to bindings
 	                              * taken at one value stay valid while it holds */
 	struct symtab *spare_locals; /* an empty table kept for the next macro call */
-	struct sym_gen lookgen;      /* finer: a name's lookup stands while its bucket and
-	                              * `all` hold (sym.h); compiled expressions keep
+	struct sym_gen lookgen;      /* finer: a name's lookup stands while its bucket's
+	                              * generation holds (sym.h); compiled expressions keep
 	                              * their variables' bindings across macro calls */
 	unsigned long writes;        /* files opened by #fopen for writing or appending:
 	                              * an #include of a file loaded before the last
@@ -111,8 +111,8 @@ struct parser {
 		const struct token *site;    /* the declared identifier's token */
 		struct value *slot;
 		unsigned long gen;           /* local: bindgen when slot was found; else
-		                              * lookgen.all, and ngen the name's bucket */
-		unsigned long ngen;
+		                              * the name's bucket's generation in lookgen */
+		unsigned bucket;             /* sym_gen_bucket of the name */
 		bool local;
 	} declcache[DECL_CACHE];
 };
@@ -190,9 +190,7 @@ static inline struct value *parse_declare_slot(struct parser *p, const struct to
 	/* A #declare's slot is the name's lookup (sym.h's generations hold it
 	 * across macro calls); a #local's is in the innermost table, which
 	 * any frame entered or left may change. */
-	if (c->site == site && c->local == local &&
-	    (local ? c->gen == p->bindgen
-	           : c->gen == p->lookgen.all && c->ngen == p->lookgen.name[sym_gen_bucket(site->str)]))
+	if (c->site == site && c->local == local && c->gen == (local ? p->bindgen : p->lookgen.name[c->bucket]))
 		return c->slot;
 	return parse_declare_slot_find(p, site, local);
 }

@@ -34,6 +34,14 @@ static size_t hash_ptr(const char *p)
 	return (size_t)x;
 }
 
+/* Move every bucket's generation (rare: a table grew or a large one went). */
+static void bump_all(struct symtab *t)
+{
+	if (t->ng)
+		for (size_t i = 0; i < SYM_GEN_BUCKETS; i++)
+			t->ng->name[i]++;
+}
+
 struct symtab *sym_new(void)
 {
 	/* Only the names need clearing: an entry's value is written with it. */
@@ -71,8 +79,8 @@ static void release(struct symtab *t)
 	/* A large table's names would take longer to list than every cached
 	 * lookup takes to redo. */
 	bool large = t->used > SYM_GEN_BUCKETS / 4;
-	if (t->ng && large)
-		t->ng->all++;
+	if (large)
+		bump_all(t);
 	for (size_t i = 0; i < t->cap; i++) {
 		const char *name = t->e[i].name;
 		if (name && name != TOMBSTONE) {
@@ -155,8 +163,7 @@ void sym_set(struct symtab *t, const char *name, struct value v)
 		t->ng->name[sym_gen_bucket(name)]++;
 	if ((t->used + 1) * 4 >= t->cap * 3) {
 		rehash(t, t->cap * 2);
-		if (t->ng)
-			t->ng->all++; /* every binding moved */
+		bump_all(t); /* every binding moved */
 	}
 	size_t i = hash_ptr(name) & (t->cap - 1);
 	while (t->e[i].name && t->e[i].name != TOMBSTONE)

@@ -12,14 +12,14 @@
 struct symtab;
 
 /* Generations that tell a cached name lookup whether it still stands
- * (sym_track): `all` moves when bindings may have moved in memory (a
- * table grew, or a large one was freed); name[sym_gen_bucket(N)] moves
- * when a binding of N (or of a name sharing its bucket) is added or
- * removed, or leaves or enters the scope chain (sym_touch). A lookup of N
- * through the same scope chain finds the same binding while neither moved. */
+ * (sym_track): name[sym_gen_bucket(N)] moves when a binding of N (or of a
+ * name sharing its bucket) is added or removed, or enters or leaves the
+ * scope chain (sym_touch, and a table's release); every bucket moves when
+ * bindings may have moved in memory (a table grew, or a large one was
+ * released). A lookup of N through the same scope chain finds the same
+ * binding while its bucket's generation holds. */
 #define SYM_GEN_BUCKETS 256
 struct sym_gen {
-	unsigned long all;
 	unsigned long name[SYM_GEN_BUCKETS];
 };
 static inline unsigned sym_gen_bucket(const char *name)
