@@ -12,7 +12,7 @@ cd "$(dirname "$0")"
 # tests and the cross-check scripts compare against; gnuplot draws the
 # plots of make accuracy.
 PACKAGES="build-essential autoconf automake pkg-config gperf libopenimageio-dev \
-openimageio-tools libcmocka-dev povray povray-includes python3-numpy gnuplot-nox"
+openimageio-tools libpng-dev zlib1g-dev libcmocka-dev povray povray-includes python3-numpy gnuplot-nox"
 # The fuzz harnesses (CONFIGURE_FLAGS="--enable-fuzz CC=clang CXX=clang++",
 # then make fuzz) need clang and its libFuzzer.
 case " $CONFIGURE_FLAGS " in

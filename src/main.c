@@ -356,7 +356,7 @@ int main(int argc, char **argv)
 	if (opt.output_to_file) {
 		struct img_out io = {
 			.path = opt.output, .format = opt.format, .bits = opt.bits,
-			.alpha = opt.alpha, .gamma = gamma, .stop = &interrupted,
+			.alpha = opt.alpha, .rle = opt.tga_rle, .gamma = gamma, .stop = &interrupted,
 		};
 		char err[1024];
 		int rc = img_write(fb, &io, err, sizeof err);

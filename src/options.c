@@ -55,7 +55,8 @@ void options_usage(FILE *out)
 "                 extension); -F writes no file\n"
 "  +Wn, +Hn       image width and height (default 800x600)\n"
 "  +F[type][bits] output format: N png, N16 16-bit png, E exr, H hdr,\n"
-"                 T tga, P ppm, J jpeg; TIFF by the .tif extension\n"
+"                 T tga, C compressed tga, P ppm (P16: 16-bit), J jpeg;\n"
+"                 TIFF by the .tif extension\n"
 "  +UA            write an alpha channel (background transparent)\n"
 "  +Lpath         add an include library folder (repeatable)\n"
 "  +WTn           render threads (default: one per core)\n"
@@ -191,6 +192,7 @@ static int set_format(struct options *o, const char *arg, FILE *err, const struc
 	}
 	o->format = map[i].f;
 	o->format_set = true;
+	o->tga_rle = c == 'C';
 	if (arg[1]) {
 		double b;
 		if (!parse_num(arg + 1, &b) || (b != 8 && b != 16)) {

@@ -19,6 +19,7 @@ struct options {
 	bool format_set;        /* +F given: overrides the output's extension */
 	int bits;               /* 8 or 16 */
 	bool alpha;             /* +UA */
+	bool tga_rle;           /* +FC: run-length encoded TGA (+FT: uncompressed) */
 	char **lib_paths;       /* +L, in order */
 	size_t nlib_paths;
 	int threads;            /* 0: one per core */

@@ -5,6 +5,7 @@
  * measurements are recorded in tests/unit/test_image.c. */
 #include "image/image.h"
 
+#include "image/formats.h"
 #include "image/oiio.h"
 
 #include <math.h>
@@ -79,8 +80,11 @@ static void expand(const struct oiio_image *o, float *dst, enum transfer tf, dou
 
 static struct image *build(const char *path, double gamma, int premultiplied, double working, char *err, unsigned errsize)
 {
+	/* PNG is read by lucent itself (the same samples as the module gives,
+	 * formats.h), so a scene with PNG maps does not load OpenImageIO. */
 	struct oiio_image o;
-	if (oiio_read(path, &o, err, errsize) != 0)
+	int rc = img_is_png(path) ? img_png_read(path, &o, err, errsize) : oiio_read(path, &o, err, errsize);
+	if (rc != 0)
 		return NULL;
 	struct image *img = calloc(1, sizeof *img);
 	size_t n = (size_t)o.width * o.height;

@@ -1,7 +1,7 @@
 /* image.h: images read from files for image_map, bump_map, image_pattern
- * and material_map (PNG, JPEG, TGA, TIFF, OpenEXR, HDR, GIF, PPM/PGM,
- * through the OpenImageIO module), and POV-Ray's ways of laying them on
- * space.
+ * and material_map (PNG read by lucent itself; JPEG, TGA, TIFF, OpenEXR,
+ * HDR, GIF, PPM/PGM through the OpenImageIO module), and POV-Ray's ways of
+ * laying them on space.
  *
  * Images are cached by path (and decoding): a scene that names the same
  * file many times reads it once. They are reference-counted; the cache

@@ -1,5 +1,6 @@
 /* output.h: encoding the framebuffer for a file (gamma, bit depth, alpha)
- * and writing it safely: under a temporary name in the destination folder,
+ * and writing it (PNG, TGA and PPM by lucent itself, see formats.h; the
+ * other formats through the OpenImageIO module) safely: under a temporary name in the destination folder,
  * renamed into place only when complete, so a failed or interrupted write
  * never destroys an existing image. */
 #ifndef LUCENT_OUTPUT_H
@@ -18,6 +19,7 @@ struct img_out {
 	enum img_format format;
 	int bits;              /* 8 or 16 for integer formats */
 	bool alpha;            /* write an alpha channel */
+	bool rle;              /* TGA: run-length encoded (POV-Ray's +FC) */
 	/* Working gamma of the framebuffer: values are c^gamma in linear light.
 	 * gamma <= 0 means POV-Ray's legacy mode (no gamma handling): the
 	 * values are written as they are. */

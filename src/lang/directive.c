@@ -44,12 +44,20 @@ static double inner_float(struct parser *p)
 	return v;
 }
 
-/* '(' FLOAT ')', reading nothing after the ')'. */
+/* '(' FLOAT ')', reading nothing after the ')'. A condition read before
+ * (a #while's, every iteration) runs whole from its compiled form,
+ * parentheses included. */
 static double paren_float(struct parser *p)
 {
+	double v;
+	struct exprcache_ticket tk;
+	if (exprcache_try_float(p, &v, &tk))
+		return v;
 	parse_expect(p, TOK_LPAREN);
-	double v = inner_float(p);
+	v = inner_float(p);
 	parse_expect(p, TOK_RPAREN);
+	struct value r = {.kind = VAL_FLOAT, .n = 1, .v = {v}};
+	exprcache_record(p, &tk, &r);
 	return v;
 }
 
@@ -458,8 +466,9 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	struct token lp = parse_raw(p);
 	if (lp.kind != TOK_LPAREN)
 		raw_expected(p, &lp, "'(' after the macro name");
-	struct symtab *locals = sym_new();
-	sym_track(locals, &p->bindgen);
+	struct symtab *locals = p->spare_locals ? p->spare_locals : sym_new();
+	p->spare_locals = NULL;
+	sym_track(locals, &p->bindgen, &p->lookgen);
 	int slot = parse_own(p, locals, (void (*)(void *))sym_free);
 	int n = 0;
 	struct frame *f = top(p);
@@ -495,9 +504,15 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 				}
 			}
 			if (!byref) {
-				/* Inside the call's parentheses everything binds. */
+				/* Inside the call's parentheses everything binds. A
+				 * numeric argument read before is run from its
+				 * compiled form (exprcache.h) without parse_rvalue's
+				 * tests for scene items: only an expression was ever
+				 * compiled at its first token. */
 				bool rel = parse_set_rel(p, true);
-				v = parse_rvalue(p);
+				struct exprcache_ticket tk;
+				if (!exprcache_try(p, &v, &tk))
+					v = parse_rvalue(p);
 				p->rel_ok = rel;
 			}
 			if (n < m->nparams)
@@ -558,6 +573,8 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	mf->macro = m->name;
 	mf->locals = locals;
 	mf->nconds = p->nconds;
+	/* The parameters now hide any other bindings of their names. */
+	sym_touch(locals);
 }
 
 /* ---- #declare, #local, #undef ---- */

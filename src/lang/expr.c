@@ -328,7 +328,12 @@ static struct value parse_color_body(struct parser *p, struct srcpos at)
 		double z[5] = {0};
 		c = val_vector(5, z, VAL_COLOR, at);
 	} else {
-		c = parse_binary(p, 1, false);
+		/* `color C` in every object a macro makes: read it compiled. */
+		struct exprcache_ticket tk;
+		if (!exprcache_try_operand(p, &c, &tk)) {
+			c = parse_binary(p, 1, false);
+			exprcache_record(p, &tk, &c);
+		}
 		need_numeric(p, &c, "a color");
 		if (c.kind == VAL_FLOAT) {
 			/* A bare float sets all five components (the manual's

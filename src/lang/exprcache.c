@@ -38,6 +38,10 @@ enum xop {
 	X_VEC,      /* pop i floats, push the vector <...> of them */
 	X_CONST,    /* push the vector constant kv (x, y, z, t, u, v) */
 	X_COLOR,    /* make the top a colour as the keyword i (rgb, rgbf, ...) does */
+	/* Fused forms of common pairs (one dispatch instead of two): */
+	X_ADDK, X_SUBK, X_MULK, X_DIVK, /* top := top op k (also k + top, k * top) */
+	X_KSUB, X_KDIV, /* top := k op top */
+	X_RANDV,    /* push the next value of the stream bound to name: rand(V) */
 };
 
 struct xinstr {
@@ -48,8 +52,10 @@ struct xinstr {
 	const struct math_fn *fn;
 	double kv[5];                /* X_CONST */
 	int kn;
-	const struct value *bound;   /* X_VAR: the binding found when bindgen was `gen` */
+	const struct value *bound;   /* X_VAR: the binding found when name's bucket
+	                              * in p->lookgen was at generation gen */
 	unsigned long gen;
+	uint16_t bucket;             /* X_VAR: sym_gen_bucket(name) */
 };
 
 enum xstate { XS_COMPILED, XS_NO };
@@ -57,7 +63,8 @@ enum xstate { XS_COMPILED, XS_NO };
 struct xentry {
 	const struct token *key;     /* the expression's first token */
 	uint8_t state;
-	bool rel_ok;                 /* the context it was compiled in */
+	uint8_t ctx;                 /* the context it was compiled in: rel_ok, and 2
+	                              * when read as an operand (exprcache_try_operand) */
 	uint32_t len;                /* its tokens */
 	struct xinstr *code;
 	int ncode;
@@ -321,6 +328,7 @@ static void primary(struct compiler *c, bool rel)
 		}
 		emit(c, X_VAR, 0, 0, 1);
 		c->code[c->ncode - 1].name = t->str;
+		c->code[c->ncode - 1].bucket = (uint16_t)sym_gen_bucket(t->str);
 		return;
 	}
 	case TOK_KEYWORD:
@@ -366,10 +374,15 @@ static void primary(struct compiler *c, bool rel)
 		emit(c, k == KW_MIN ? X_MIN : X_MAX, n, 0, 1 - n);
 		return;
 	}
-	case KW_RAND:
+	case KW_RAND: {
+		int at = c->ncode;
 		args(c, 1);
-		emit(c, X_RAND, 0, 0, 0);
+		if (c->ok && c->ncode == at + 1 && c->code[at].op == X_VAR)
+			c->code[at].op = X_RANDV; /* rand(V): the variable's stream */
+		else
+			emit(c, X_RAND, 0, 0, 0);
 		return;
+	}
 	default:
 		break;
 	}
@@ -401,8 +414,23 @@ static void unary(struct compiler *c, bool rel)
 	primary(c, rel);
 }
 
+/* The fused instruction for `x op k` (k_left: `k op x`), or -1. Addition
+ * and multiplication give the same result either way round (also on
+ * vectors: a float operand fills every component). */
+static int fused(enum xop op, bool k_left)
+{
+	switch (op) {
+	case X_ADD: return X_ADDK;
+	case X_MUL: return X_MULK;
+	case X_SUB: return k_left ? X_KSUB : X_SUBK;
+	case X_DIV: return k_left ? X_KDIV : X_DIVK;
+	default: return -1;
+	}
+}
+
 static void binary(struct compiler *c, int min_prec, bool rel, bool inv)
 {
+	int start = c->ncode;
 	unary(c, rel);
 	while (c->ok) {
 		enum xop op;
@@ -410,8 +438,30 @@ static void binary(struct compiler *c, int min_prec, bool rel, bool inv)
 		if (prec == 0 || prec < min_prec)
 			return;
 		c->at++;
+		/* A lone number on either side becomes the operand of a fused
+		 * instruction (40 * rand(R) - 20: two instructions fewer). The
+		 * left one is taken back before the right side is compiled, so
+		 * no jump target moves. */
+		bool k_left = fused(op, true) >= 0 && c->ncode == start + 1 && c->code[start].op == X_NUM;
+		double k = k_left ? c->code[start].k : 0;
+		if (k_left) {
+			c->ncode--;
+			c->sp--;
+		}
+		int right = c->ncode;
 		binary(c, prec + 1, rel, inv);
-		emit(c, op, 0, 0, -1);
+		if (!c->ok)
+			return;
+		if (k_left) {
+			emit(c, (enum xop)fused(op, true), 0, k, 0);
+		} else if (fused(op, false) >= 0 && c->ncode == right + 1 && c->code[right].op == X_NUM) {
+			k = c->code[right].k;
+			c->ncode--;
+			c->sp--;
+			emit(c, (enum xop)fused(op, false), 0, k, 0);
+		} else {
+			emit(c, op, 0, 0, -1);
+		}
 	}
 }
 
@@ -438,7 +488,7 @@ static void cond(struct compiler *c, bool rel, bool inv)
 		c->code[jmp].i = c->ncode;
 }
 
-static void compile(struct xentry *e, const struct parser *p, const struct token *t, uint32_t n, bool rel)
+static void compile(struct xentry *e, const struct parser *p, const struct token *t, uint32_t n, bool rel, bool operand)
 {
 	struct compiler c = {.p = p, .t = t, .n = n, .ok = true};
 	cond(&c, rel, false);
@@ -451,7 +501,7 @@ static void compile(struct xentry *e, const struct parser *p, const struct token
 	e->ncode = c.ncode;
 	e->depth = c.depth;
 	e->len = n;
-	e->rel_ok = rel;
+	e->ctx = (uint8_t)(rel | operand << 1);
 	/* A vector literal at the very end (a colour keyword may follow)
 	 * takes the floats its components left on the stack: run_scalar
 	 * gathers them. Everything before must be float operations. */
@@ -544,18 +594,20 @@ static void make_color(enum kw k, struct xval *x)
 
 enum { XRAND_UNDO = 32 };
 
-/* The value an X_VAR names. The binding found last time stands while no
- * binding has been added or removed and no frame entered or left. A
+/* The value an X_VAR names. The binding found last time stands while the
+ * name's lookup generation holds (sym.h: no binding of the name added or
+ * removed, entered or left the scope chain, and no table grew), so a
+ * loop's variables stay found across the macro calls in its body. A
  * by-reference parameter is followed every time (the array element it
  * names can move). */
 static inline const struct value *var_value(struct parser *p, struct xinstr *in)
 {
 	const struct value *v = in->bound;
-	if (v && in->gen == p->bindgen)
+	if (v && in->gen == p->lookgen.name[in->bucket])
 		return v;
 	v = parse_binding(p, in->name);
 	in->bound = v && v->kind != VAL_ALIAS ? v : NULL;
-	in->gen = p->bindgen;
+	in->gen = p->lookgen.name[in->bucket];
 	if (v && v->kind == VAL_ALIAS)
 		v = parse_lookup(p, in->name);
 	return v;
@@ -578,7 +630,7 @@ static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 		case X_VAR: {
 			const struct value *v = var_value(p, in);
 			if (!v || v->kind != VAL_FLOAT || v->deprecated)
-				goto fail;
+				goto not_float;
 			st[sp++] = v->v[0];
 			break;
 		}
@@ -624,6 +676,27 @@ static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 			st[sp++] = acc;
 			break;
 		}
+		case X_ADDK: st[sp - 1] += in->k; break;
+		case X_SUBK: st[sp - 1] -= in->k; break;
+		case X_MULK: st[sp - 1] *= in->k; break;
+		case X_DIVK:
+			if (in->k == 0)
+				goto fail;
+			st[sp - 1] /= in->k;
+			break;
+		case X_KSUB: st[sp - 1] = in->k - st[sp - 1]; break;
+		case X_KDIV:
+			if (st[sp - 1] == 0)
+				goto fail;
+			st[sp - 1] = in->k / st[sp - 1];
+			break;
+		case X_RANDV: {
+			const struct value *v = var_value(p, in);
+			if (!v || v->kind != VAL_FLOAT || v->deprecated)
+				goto not_float;
+			st[sp++] = v->v[0];
+		}
+			/* fall through */
 		case X_RAND: {
 			long i = (long)st[sp - 1];
 			if (i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
@@ -653,6 +726,10 @@ static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 	if (body + 1 < e->ncode)
 		make_color((enum kw)e->code[body + 1].i, out);
 	return true;
+not_float:
+	/* A variable holds a vector or colour (a macro's parameter P in
+	 * sphere { P, R }): run takes this entry from now on. */
+	e->scalar = false;
 fail:
 	while (nundo > 0) {
 		nundo--;
@@ -741,6 +818,31 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 			st[sp++].v[0] = acc;
 			break;
 		}
+		case X_ADDK: case X_SUBK: case X_MULK: case X_DIVK: case X_KSUB: case X_KDIV: {
+			static const enum xop base[] = {
+				[X_ADDK] = X_ADD, [X_SUBK] = X_SUB, [X_MULK] = X_MUL,
+				[X_DIVK] = X_DIV, [X_KSUB] = X_SUB, [X_KDIV] = X_DIV,
+			};
+			struct xval k = {.v = {in->k}, .n = 1, .kind = VAL_FLOAT};
+			if (in->op == X_KSUB || in->op == X_KDIV) {
+				struct xval x = st[sp - 1];
+				st[sp - 1] = k;
+				if (!binary_op(base[in->op], &st[sp - 1], &x))
+					goto fail;
+			} else if (!binary_op(base[in->op], &st[sp - 1], &k)) {
+				goto fail;
+			}
+			break;
+		}
+		case X_RANDV: {
+			const struct value *v = var_value(p, in);
+			if (!v || v->kind != VAL_FLOAT || v->deprecated)
+				goto fail;
+			st[sp].v[0] = v->v[0];
+			st[sp].n = 1;
+			st[sp++].kind = VAL_FLOAT;
+		}
+			/* fall through */
 		case X_RAND: {
 			long i = (long)st[sp - 1].v[0];
 			if (st[sp - 1].kind != VAL_FLOAT || i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
@@ -786,7 +888,8 @@ fail:
 
 /* Where the compiled form may run: the parser at a token whose expression
  * is compiled for this context. Returns the entry, or NULL. */
-static inline __attribute__((always_inline)) struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index)
+static inline __attribute__((always_inline)) struct xentry *ready(struct parser *p, struct exprcache_ticket *tk, long *index,
+                                                                  bool operand)
 {
 	tk->key = NULL;
 	if (!p->xcache)
@@ -807,9 +910,10 @@ static inline __attribute__((always_inline)) struct xentry *ready(struct parser 
 		tk->frame = p->nframes;
 		tk->events = p->events;
 		tk->rel_ok = p->rel_ok;
+		tk->operand = operand;
 		return NULL;
 	}
-	if (e->state != XS_COMPILED || e->rel_ok != p->rel_ok || (size_t)i + e->len > f->end)
+	if (e->state != XS_COMPILED || e->ctx != (p->rel_ok | operand << 1) || (size_t)i + e->len > f->end)
 		return NULL;
 	if ((size_t)i + e->len == f->end && !ends_in_caller(p))
 		return NULL;
@@ -826,10 +930,10 @@ static void skip(struct parser *p, long i, const struct xentry *e)
 	p->prev = f->toks[f->pos - 1];
 }
 
-bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk)
+static bool try_value(struct parser *p, struct value *out, struct exprcache_ticket *tk, bool operand)
 {
 	long i;
-	struct xentry *e = ready(p, tk, &i);
+	struct xentry *e = ready(p, tk, &i, operand);
 	if (!e)
 		return false;
 	struct xval x;
@@ -848,10 +952,20 @@ bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket 
 	return true;
 }
 
+bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk)
+{
+	return try_value(p, out, tk, false);
+}
+
+bool exprcache_try_operand(struct parser *p, struct value *out, struct exprcache_ticket *tk)
+{
+	return try_value(p, out, tk, true);
+}
+
 bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket *tk)
 {
 	long i;
-	struct xentry *e = ready(p, tk, &i);
+	struct xentry *e = ready(p, tk, &i, false);
 	if (!e)
 		return false;
 	struct xval x;
@@ -886,5 +1000,5 @@ void exprcache_record(struct parser *p, const struct exprcache_ticket *tk, const
 	long start = tk->key - tk->toks;
 	if (start < 0 || (size_t)start >= tk->limit || end <= start)
 		return;
-	compile(e, p, tk->key, (uint32_t)(end - start), tk->rel_ok);
+	compile(e, p, tk->key, (uint32_t)(end - start), tk->rel_ok, tk->operand);
 }

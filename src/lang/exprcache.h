@@ -19,6 +19,7 @@ struct exprcache_ticket {
 	int frame;
 	unsigned long events;
 	bool rel_ok;
+	bool operand;
 };
 
 struct exprcache *exprcache_new(void);
@@ -29,6 +30,10 @@ void exprcache_free(struct exprcache *c);
  * or false, leaving the parser as it was, when the ordinary parser must
  * read it; then call exprcache_record with tk and its result. */
 bool exprcache_try(struct parser *p, struct value *out, struct exprcache_ticket *tk);
+/* The same for an operand without `? :` at its top (what parse_binary
+ * reads: a colour after `color`). Kept apart from exprcache_try's
+ * entries, which may take in a `? :` that follows. */
+bool exprcache_try_operand(struct parser *p, struct value *out, struct exprcache_ticket *tk);
 /* The same for a caller that wants a float (any other result: false). */
 bool exprcache_try_float(struct parser *p, double *out, struct exprcache_ticket *tk);
 void exprcache_record(struct parser *p, const struct exprcache_ticket *tk, const struct value *v);

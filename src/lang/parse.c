@@ -201,7 +201,13 @@ static void pop_frame(struct parser *p)
 	check_frame_conds(p, p->nframes - 1);
 	p->events++;
 	p->bindgen++;
-	sym_free(f->locals);
+	/* A macro's table is emptied and kept for the next call. */
+	if (f->kind == FRAME_MACRO && f->locals && !p->spare_locals) {
+		sym_clear(f->locals);
+		p->spare_locals = f->locals;
+	} else {
+		sym_free(f->locals);
+	}
 	f->locals = NULL;
 	p->nframes--;
 }
@@ -233,7 +239,7 @@ void parse_push_file(struct parser *p, uint32_t file, struct srcpos from)
 	f->file = file;
 	f->locals = p->nframes > 1 ? sym_new() : NULL;
 	if (f->locals)
-		sym_track(f->locals, &p->bindgen);
+		sym_track(f->locals, &p->bindgen, &p->lookgen);
 	/* Lex with the frame in place, so a lexical error shows the include
 	 * chain that led to this file. */
 	if (!lex_file(p->sm, file, p->d))
@@ -504,7 +510,8 @@ struct value *parse_declare_slot_find(struct parser *p, const struct token *site
 	}
 	c->site = site;
 	c->slot = v;
-	c->gen = p->bindgen;
+	c->bucket = sym_gen_bucket(name);
+	c->gen = local ? p->bindgen : p->lookgen.name[c->bucket];
 	c->local = local;
 	return v;
 }
@@ -634,7 +641,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	p->names = sm->names;
 	p->boundary = &jb;
 	p->globals = sym_new();
-	sym_track(p->globals, &p->bindgen);
+	sym_track(p->globals, &p->bindgen, &p->lookgen);
 	p->xcache = exprcache_new();
 	p->version = 3.7;
 	parse_limits_default(&p->lim);
@@ -684,6 +691,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	for (int i = p->nframes - 1; i >= 0; i--)
 		sym_free(p->frames[i].locals);
 	sym_free(p->globals);
+	sym_free(p->spare_locals);
 	free(p->rng);
 	exprcache_free(p->xcache);
 	texture_unref(p->default_tex);

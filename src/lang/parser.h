@@ -100,13 +100,19 @@ struct parser {
 	unsigned long bindgen;       /* bumped when any binding is added or removed or a
 	                              * frame is entered or left: pointers to bindings
 	                              * taken at one value stay valid while it holds */
+	struct symtab *spare_locals; /* an empty table kept for the next macro call */
+	struct sym_gen lookgen;      /* finer: a name's lookup stands while its bucket's
+	                              * generation holds (sym.h); compiled expressions keep
+	                              * their variables' bindings across macro calls */
 	unsigned long writes;        /* files opened by #fopen for writing or appending:
 	                              * an #include of a file loaded before the last
 	                              * such #fopen reads it again */
 	struct decl_cache {          /* the slot each recent #declare/#local wrote */
 		const struct token *site;    /* the declared identifier's token */
 		struct value *slot;
-		unsigned long gen;           /* bindgen when slot was found */
+		unsigned long gen;           /* local: bindgen when slot was found; else
+		                              * the name's bucket's generation in lookgen */
+		unsigned bucket;             /* sym_gen_bucket of the name */
 		bool local;
 	} declcache[DECL_CACHE];
 };
@@ -174,13 +180,17 @@ struct value *parse_assign_slot(struct parser *p, const char *name, bool local);
 /* Assign v (taking it) as #declare / #local does. */
 void parse_assign(struct parser *p, const char *name, bool local, struct value v);
 /* parse_assign_slot for the declaration of the identifier token `site`
- * (in a token array): the slot found last time there is reused while no
- * binding has been added or removed and no frame entered or left. */
+ * (in a token array): the slot found last time there is reused while it
+ * stands (#local: no binding added or removed and no frame entered or
+ * left; #declare: the name's lookup generations hold). */
 struct value *parse_declare_slot_find(struct parser *p, const struct token *site, bool local);
 static inline struct value *parse_declare_slot(struct parser *p, const struct token *site, bool local)
 {
 	const struct decl_cache *c = &p->declcache[((uintptr_t)site / sizeof *site) & (DECL_CACHE - 1)];
-	if (c->site == site && c->gen == p->bindgen && c->local == local)
+	/* A #declare's slot is the name's lookup (sym.h's generations hold it
+	 * across macro calls); a #local's is in the innermost table, which
+	 * any frame entered or left may change. */
+	if (c->site == site && c->local == local && c->gen == (local ? p->bindgen : p->lookgen.name[c->bucket]))
 		return c->slot;
 	return parse_declare_slot_find(p, site, local);
 }

@@ -10,10 +10,16 @@ struct entry {
 	struct value val;
 };
 
+/* Most tables are a macro call's few parameters: their first entries live
+ * in the table itself, so a call costs one allocation. */
+#define SYM_SMALL 8
+
 struct symtab {
-	struct entry *e;
-	size_t cap, used; /* used counts live entries and tombstones */
+	struct entry *e;    /* small, or a larger array of its own */
+	size_t cap, used;   /* used counts live entries and tombstones */
 	unsigned long *gen; /* bumped when a binding is added or removed (sym_track) */
+	struct sym_gen *ng; /* kept as sym_gen describes (sym_track), or NULL */
+	struct entry small[SYM_SMALL];
 };
 
 static const char tombstone[1];
@@ -28,28 +34,81 @@ static size_t hash_ptr(const char *p)
 	return (size_t)x;
 }
 
+/* Move every bucket's generation (rare: a table grew or a large one went). */
+static void bump_all(struct symtab *t)
+{
+	if (t->ng)
+		for (size_t i = 0; i < SYM_GEN_BUCKETS; i++)
+			t->ng->name[i]++;
+}
+
 struct symtab *sym_new(void)
 {
-	struct symtab *t = calloc(1, sizeof *t);
+	/* Only the names need clearing: an entry's value is written with it. */
+	struct symtab *t = malloc(sizeof *t);
 	if (!t) abort();
-	t->cap = 8; /* most tables are a macro call's few parameters */
-	t->e = calloc(t->cap, sizeof *t->e);
-	if (!t->e) abort();
+	t->e = t->small;
+	t->cap = SYM_SMALL;
+	t->used = 0;
+	t->gen = NULL;
+	t->ng = NULL;
+	for (size_t i = 0; i < SYM_SMALL; i++)
+		t->small[i].name = NULL;
 	return t;
 }
 
-void sym_track(struct symtab *t, unsigned long *gen)
+void sym_track(struct symtab *t, unsigned long *gen, struct sym_gen *ng)
 {
 	t->gen = gen;
+	t->ng = ng;
+}
+
+void sym_touch(const struct symtab *t)
+{
+	if (!t->ng)
+		return;
+	for (size_t i = 0; i < t->cap; i++)
+		if (t->e[i].name && t->e[i].name != TOMBSTONE)
+			t->ng->name[sym_gen_bucket(t->e[i].name)]++;
+}
+
+/* Release t's bindings: their values, and the lookups cached on them
+ * (sym_gen). */
+static void release(struct symtab *t)
+{
+	/* A large table's names would take longer to list than every cached
+	 * lookup takes to redo. */
+	bool large = t->used > SYM_GEN_BUCKETS / 4;
+	if (large)
+		bump_all(t);
+	for (size_t i = 0; i < t->cap; i++) {
+		const char *name = t->e[i].name;
+		if (name && name != TOMBSTONE) {
+			if (t->ng && !large)
+				t->ng->name[sym_gen_bucket(name)]++;
+			val_clear(&t->e[i].val);
+		}
+	}
+}
+
+void sym_clear(struct symtab *t)
+{
+	release(t);
+	if (t->e != t->small)
+		free(t->e);
+	t->e = t->small;
+	t->cap = SYM_SMALL;
+	t->used = 0;
+	for (size_t i = 0; i < SYM_SMALL; i++)
+		t->small[i].name = NULL;
 }
 
 void sym_free(struct symtab *t)
 {
 	if (!t) return;
-	for (size_t i = 0; i < t->cap; i++)
-		if (t->e[i].name && t->e[i].name != TOMBSTONE)
-			val_clear(&t->e[i].val);
-	free(t->e);
+	release(t);
+	if (t->e != t->small)
+		free(t->e);
 	free(t);
 }
 
@@ -86,7 +145,8 @@ static void rehash(struct symtab *t, size_t ncap)
 			t->e[j] = old[i];
 			t->used++;
 		}
-	free(old);
+	if (old != t->small)
+		free(old);
 }
 
 void sym_set(struct symtab *t, const char *name, struct value v)
@@ -99,8 +159,12 @@ void sym_set(struct symtab *t, const char *name, struct value v)
 	}
 	if (t->gen)
 		++*t->gen;
-	if ((t->used + 1) * 4 >= t->cap * 3)
+	if (t->ng)
+		t->ng->name[sym_gen_bucket(name)]++;
+	if ((t->used + 1) * 4 >= t->cap * 3) {
 		rehash(t, t->cap * 2);
+		bump_all(t); /* every binding moved */
+	}
 	size_t i = hash_ptr(name) & (t->cap - 1);
 	while (t->e[i].name && t->e[i].name != TOMBSTONE)
 		i = (i + 1) & (t->cap - 1);
@@ -119,6 +183,8 @@ bool sym_remove(struct symtab *t, const char *name)
 	e->name = TOMBSTONE;
 	if (t->gen)
 		++*t->gen;
+	if (t->ng)
+		t->ng->name[sym_gen_bucket(name)]++;
 	return true;
 }
 

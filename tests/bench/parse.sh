@@ -7,7 +7,7 @@
 : "${LUCENT:=$top_srcdir/lucent}"
 cd "$top_srcdir/tests/bench" || exit 1
 printf '%-16s %12s %12s %8s\n' scene lucent povray ratio
-for scene in parse-while parse-macro; do
+for scene in parse-while parse-macro bench-spheres; do
 	l=$("$LUCENT" -F +W1 +H1 +WT1 "$scene.pov" 2>&1 | sed -n 's/^  parse *\([0-9.]*\) s$/\1/p')
 	if command -v povray > /dev/null 2>&1; then
 		p=$(povray -D -F +W1 +H1 +WT1 "+I$scene.pov" 2>&1 | sed -n 's/.*Parse Time:.*(\([0-9.]*\) seconds).*/\1/p')
