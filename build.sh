@@ -10,9 +10,11 @@ cd "$(dirname "$0")"
 
 # Build tools and libraries; POV-Ray and its includes are the references the
 # tests and the cross-check scripts compare against; gnuplot draws the
-# plots of make accuracy.
+# plots of make accuracy; the Liberation and DejaVu fonts stand in for
+# POV-Ray's own fonts in text objects when fonts-povray is not installed.
 PACKAGES="build-essential autoconf automake pkg-config gperf libopenimageio-dev \
-openimageio-tools libpng-dev zlib1g-dev libcmocka-dev povray povray-includes python3-numpy gnuplot-nox"
+openimageio-tools libpng-dev zlib1g-dev libcmocka-dev povray povray-includes python3-numpy gnuplot-nox \
+fonts-liberation fonts-dejavu-core"
 # The fuzz harnesses (CONFIGURE_FLAGS="--enable-fuzz CC=clang CXX=clang++",
 # then make fuzz) need clang and its libFuzzer.
 case " $CONFIGURE_FLAGS " in

@@ -6,6 +6,9 @@
 
 #include "scene/object.h"
 
+#include <stddef.h>
+#include <stdint.h>
+
 struct object *sphere_new(vec3 center, double radius, struct srcpos pos);
 /* plane { normal, distance }: the points p with dot(p, n̂) = distance*|n|/|n|
  * as POV-Ray defines it; the inside is the side the normal points away from. */
@@ -50,5 +53,15 @@ struct object *prism_new(enum prism_spline spline, bool conic, double h1, double
 /* The prism's `open` (no caps) and `sturm` (the Sturm root solver). */
 void prism_set_open(struct object *o, bool open);
 void prism_set_sturm(struct object *o, bool sturm);
+
+/* text { ttf FONT STRING thickness, offset }: the glyphs of codes[0..n)
+ * (Unicode code points) laid out as POV-Ray 3.7 does (see text.c) and
+ * extruded from z = 0 to z = thickness; the font is only read here (the
+ * caller keeps it). A glyph whose data is damaged is left out and its code
+ * point (or 0xFFFFFFFF for code 0) goes to *bad_glyph (may be NULL; 0 if
+ * every glyph was read). */
+struct ttf_font;
+struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
+                        double off_y, struct srcpos pos, uint32_t *bad_glyph);
 
 #endif

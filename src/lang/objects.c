@@ -706,6 +706,7 @@ bool parse_is_object_start(enum kw k)
 	case KW_SPHERE: case KW_PLANE: case KW_BOX: case KW_CYLINDER: case KW_CONE: case KW_DISC:
 	case KW_TORUS: case KW_TRIANGLE: case KW_SMOOTH_TRIANGLE: case KW_QUADRIC: case KW_CUBIC:
 	case KW_QUARTIC: case KW_POLY: case KW_SUPERELLIPSOID: case KW_MESH: case KW_MESH2: case KW_PRISM:
+	case KW_TEXT:
 	case KW_UNION: case KW_INTERSECTION: case KW_DIFFERENCE: case KW_MERGE: case KW_OBJECT:
 	case KW_LIGHT_GROUP:
 		return true;
@@ -972,6 +973,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		s.args = &args;
 		s.o = parse_object2(p, k, at);
 		break;
+	case KW_TEXT: s.o = parse_text(p, at); break;
 	case KW_MESH:
 	case KW_MESH2:
 		s.mb = mesh_builder_new(k == KW_MESH ? MESH_KIND_MESH : MESH_KIND_MESH2);

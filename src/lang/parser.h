@@ -399,6 +399,9 @@ bool parse_object2_flag(struct object *o, enum kw k, bool is_open, bool on);
 /* A transformation (translate, rotate, scale, matrix, transform) at the
  * current token into *out; false if there is none. */
 bool parse_transform_item(struct parser *p, struct xform *out);
+/* text { ... } from the token after '{' up to its modifiers
+ * (text_parse.c); at is the statement's position. The caller owns it. */
+struct object *parse_text(struct parser *p, struct srcpos at);
 /* `transform` { ... } | IDENT as a value; the caller owns the result. */
 struct xform *parse_transform_value(struct parser *p);
 

@@ -15,7 +15,7 @@ struct scene *scene_new(void)
 	s->gs.irid_wavelength = rgb_make(0.25, 0.18, 0.14);
 	s->gs.noise_generator = 2;
 	s->gs.number_of_waves = 10;
-	s->gs.charset = 1;
+	s->gs.charset = 0; /* ascii, POV-Ray 3.7's default (measured with text) */
 	s->background.t = 1; /* POV-Ray 3.7: transparent black until a background statement */
 	s->version = 3.7;
 	return s;

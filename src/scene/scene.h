@@ -21,7 +21,7 @@ struct global_settings {
 	rgb irid_wavelength;   /* <0.25, 0.18, 0.14>; read but, as in POV-Ray 3.7, without effect */
 	int noise_generator;   /* 1, 2 (the default) or 3: for patterns that do not name one */
 	int number_of_waves;   /* waves and ripples: 10 by default */
-	int charset;           /* 0: ascii, 1: utf8 (the default), 2: sys */
+	int charset;           /* 0: ascii (the default), 1: utf8, 2: sys */
 };
 
 struct scene {

@@ -1,0 +1,420 @@
+/* text.c: text { ttf FONT STRING THICKNESS, OFFSET }: the glyphs of a
+ * TrueType font laid out along +x with the baseline on y = 0 and extruded
+ * from z = 0 to z = THICKNESS; one unit is the font's em.
+ *
+ * The layout is POV-Ray 3.7's, measured with min_extent, max_extent and
+ * trace() on its own fonts: each glyph stands at the pen position, the pen
+ * moves by the glyph's advance width, the kerning of the pair (the font's
+ * kern table) and OFFSET's x and y (OFFSET's z is ignored); the whole line
+ * is moved left by the first glyph's xMin (its glyph header's, which need
+ * not be its left side bearing), so its ink starts at x = 0. The bounds
+ * are the outlines' and, for an empty glyph (a space), its pen position;
+ * a text of no characters is unbounded.
+ *
+ * Every glyph outline is a set of closed contours made of quadratic Bezier
+ * pieces and lines. A ray meets the sides where its projection on the xy
+ * plane, a line a x + b y + c = 0, crosses a piece: a root in [0, 1] of a
+ * polynomial of degree 2 or 1. The caps are the planes z = 0 and
+ * z = THICKNESS inside the outline (the even-odd rule). Normals are POV-Ray's
+ * raw ones: a side's normal points to the right of the contour's direction
+ * of travel (inward for TrueType's clockwise outer contours); the cap at
+ * z = 0 gives -z and the one at z = THICKNESS gives +z, whatever the sign
+ * of THICKNESS. The renderer turns normals to face the ray, so only
+ * trace() sees the sign. */
+#include "geom/shapes.h"
+#include "geom/solve.h"
+
+#include "font/ttf.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* One piece: x(u) = x[0] + x[1] u + x[2] u^2, the same for y, u in [0, 1]. */
+struct tseg {
+	double x[3], y[3];
+	double lo[2], hi[2]; /* its extent in x and y */
+};
+
+/* One glyph: the pieces seg[first, first + n) of the text. */
+struct tglyph {
+	int first, n;
+	double lo[2], hi[2];
+};
+
+enum { PART_FRONT = -1, PART_BACK = -2 };
+
+struct text {
+	struct object base;
+	struct tseg *seg;
+	int nseg;
+	struct tglyph *glyph;
+	int nglyph;
+	double z0, z1;       /* z0 <= z1 */
+	double zfront;       /* 0: the cap whose normal is -z */
+	double lo[2], hi[2]; /* the extent of every glyph */
+};
+
+static double poly2(const double c[3], double u)
+{
+	return (c[2] * u + c[1]) * u + c[0];
+}
+
+static double dpoly2(const double c[3], double u)
+{
+	return 2 * c[2] * u + c[1];
+}
+
+/* The extent of c(u) for u in [0, 1]. */
+static void extent(const double c[3], double *lo, double *hi)
+{
+	double a = c[0], b = poly2(c, 1);
+	*lo = fmin(a, b);
+	*hi = fmax(a, b);
+	if (c[2] != 0) {
+		double u = -c[1] / (2 * c[2]);
+		if (u > 0 && u < 1) {
+			double v = poly2(c, u);
+			*lo = fmin(*lo, v);
+			*hi = fmax(*hi, v);
+		}
+	}
+}
+
+/* ---- intersection ---- */
+
+/* Is (x, y) inside glyph g (the even-odd rule)? The half-line towards +x
+ * is followed; a crossing at a joint between two pieces counts for the
+ * piece that leaves it upwards or arrives at it downwards, so that a
+ * joint where the outline only touches the half-line counts twice or not
+ * at all. */
+static bool inside_glyph(const struct text *T, const struct tglyph *g, double x, double y)
+{
+	if (!(x >= g->lo[0] && x <= g->hi[0] && y >= g->lo[1] && y <= g->hi[1]))
+		return false;
+	const double eps = 1e-9;
+	int count = 0;
+	for (int i = g->first; i < g->first + g->n; i++) {
+		const struct tseg *s = &T->seg[i];
+		if (y < s->lo[1] || y > s->hi[1] || x > s->hi[0])
+			continue;
+		double r[2];
+		int nr = solve_quadratic(s->y[2], s->y[1], s->y[0] - y, r);
+		for (int k = 0; k < nr; k++) {
+			if (!(r[k] >= -eps && r[k] <= 1 + eps))
+				continue;
+			double u = fmin(fmax(r[k], 0), 1);
+			if (!(poly2(s->x, u) > x))
+				continue;
+			double dy = dpoly2(s->y, u);
+			if ((dy > 0 && r[k] < 1 - eps) || (dy < 0 && r[k] > eps))
+				count++;
+		}
+	}
+	return count & 1;
+}
+
+static bool inside_2d(const struct text *T, double x, double y)
+{
+	if (!(x >= T->lo[0] && x <= T->hi[0] && y >= T->lo[1] && y <= T->hi[1]))
+		return false;
+	/* Glyphs may overlap (a negative offset, kerning): inside one is
+	 * inside the text. */
+	for (int i = 0; i < T->nglyph; i++)
+		if (inside_glyph(T, &T->glyph[i], x, y))
+			return true;
+	return false;
+}
+
+/* Every hit with tmin < t < tmax, passed to `take` in no order; stops
+ * early when take returns false. */
+typedef bool (*hit_sink)(void *ctx, double t, int part, double u);
+
+static void text_hits(const struct text *T, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx)
+{
+	if (T->nglyph == 0)
+		return;
+	vec3 o = r->org, d = r->dir;
+	/* Where the ray is between the caps. */
+	double lo = tmin, hi = tmax;
+	if (d.z != 0) {
+		double a = (T->z0 - o.z) / d.z, b = (T->z1 - o.z) / d.z;
+		lo = fmax(lo, fmin(a, b));
+		hi = fmin(hi, fmax(a, b));
+	} else if (o.z < T->z0 || o.z > T->z1) {
+		return;
+	}
+	/* And inside the text's box in x and y. */
+	double dd[2] = {d.x, d.y}, oo[2] = {o.x, o.y};
+	for (int k = 0; k < 2; k++) {
+		if (dd[k] != 0) {
+			double a = (T->lo[k] - oo[k]) / dd[k], b = (T->hi[k] - oo[k]) / dd[k];
+			lo = fmax(lo, fmin(a, b));
+			hi = fmin(hi, fmax(a, b));
+		} else if (oo[k] < T->lo[k] || oo[k] > T->hi[k]) {
+			return;
+		}
+	}
+	if (!(lo <= hi))
+		return;
+
+	/* Caps. */
+	if (d.z != 0) {
+		for (int c = 0; c < 2; c++) {
+			double z = c == 0 ? T->z0 : T->z1;
+			double t = (z - o.z) / d.z;
+			if (!(t > tmin && t < tmax))
+				continue;
+			if (inside_2d(T, o.x + t * d.x, o.y + t * d.y))
+				if (!take(ctx, t, z == T->zfront ? PART_FRONT : PART_BACK, 0))
+					return;
+		}
+	}
+
+	/* Sides: the line a X + b Y + c = 0 the ray's points satisfy. */
+	double a = d.y, b = -d.x, c = o.y * d.x - o.x * d.y;
+	if (a == 0 && b == 0)
+		return; /* a ray along z */
+	for (int gi = 0; gi < T->nglyph; gi++) {
+		const struct tglyph *g = &T->glyph[gi];
+		/* Skip a glyph whose box lies on one side of the line. */
+		double f00 = a * g->lo[0] + b * g->lo[1] + c, f01 = a * g->lo[0] + b * g->hi[1] + c;
+		double f10 = a * g->hi[0] + b * g->lo[1] + c, f11 = a * g->hi[0] + b * g->hi[1] + c;
+		if ((f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0))
+			continue;
+		for (int i = g->first; i < g->first + g->n; i++) {
+			const struct tseg *s = &T->seg[i];
+			f00 = a * s->lo[0] + b * s->lo[1] + c;
+			f01 = a * s->lo[0] + b * s->hi[1] + c;
+			f10 = a * s->hi[0] + b * s->lo[1] + c;
+			f11 = a * s->hi[0] + b * s->hi[1] + c;
+			if ((f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0))
+				continue;
+			double q[3] = {a * s->x[0] + b * s->y[0] + c, a * s->x[1] + b * s->y[1], a * s->x[2] + b * s->y[2]};
+			double roots[2];
+			int nr = solve_quadratic(q[2], q[1], q[0], roots);
+			for (int k = 0; k < nr; k++) {
+				if (!(roots[k] >= -1e-9 && roots[k] <= 1 + 1e-9))
+					continue;
+				double u = fmin(fmax(roots[k], 0), 1);
+				double X = poly2(s->x, u), Y = poly2(s->y, u);
+				double t = fabs(d.x) >= fabs(d.y) ? (X - o.x) / d.x : (Y - o.y) / d.y;
+				double z = o.z + t * d.z;
+				if (!(t > tmin && t < tmax) || !(z >= T->z0 && z <= T->z1))
+					continue;
+				if (!take(ctx, t, i, u))
+					return;
+			}
+		}
+	}
+}
+
+struct closest {
+	double t;
+	int part;
+	double u;
+	bool found;
+};
+
+static bool take_closest(void *ctx, double t, int part, double u)
+{
+	struct closest *c = ctx;
+	if (!c->found || t < c->t) {
+		c->t = t;
+		c->part = part;
+		c->u = u;
+		c->found = true;
+	}
+	return true;
+}
+
+static bool text_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
+{
+	struct closest c = {.found = false};
+	text_hits((const struct text *)o, r, tmin, tmax, take_closest, &c);
+	if (!c.found)
+		return false;
+	h->t = c.t;
+	h->part = c.part;
+	h->u = c.u;
+	return true;
+}
+
+struct all {
+	const struct object *o;
+	struct hit *out;
+	int n, max;
+};
+
+/* Keep the `max` nearest hits, sorted. */
+static bool take_all(void *ctx, double t, int part, double u)
+{
+	struct all *a = ctx;
+	if (a->max <= 0)
+		return false;
+	if (a->n == a->max && t >= a->out[a->n - 1].t)
+		return true;
+	int i = a->n < a->max ? a->n++ : a->n - 1;
+	while (i > 0 && a->out[i - 1].t > t) {
+		a->out[i] = a->out[i - 1];
+		i--;
+	}
+	a->out[i] = (struct hit){.t = t, .obj = a->o, .part = part, .u = u};
+	return true;
+}
+
+static int text_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out, int max)
+{
+	struct all a = {.o = o, .out = out, .max = max};
+	text_hits((const struct text *)o, r, tmin, tmax, take_all, &a);
+	return a.n;
+}
+
+static bool text_inside(const struct object *o, vec3 p)
+{
+	const struct text *T = (const struct text *)o;
+	return p.z >= T->z0 && p.z <= T->z1 && inside_2d(T, p.x, p.y);
+}
+
+static vec3 text_normal(const struct object *o, vec3 p, const struct hit *h)
+{
+	const struct text *T = (const struct text *)o;
+	(void)p;
+	if (h->part == PART_FRONT)
+		return v3(0, 0, -1);
+	if (h->part < 0 || h->part >= T->nseg)
+		return v3(0, 0, 1);
+	const struct tseg *s = &T->seg[h->part];
+	double dx = dpoly2(s->x, h->u), dy = dpoly2(s->y, h->u);
+	if (dx == 0 && dy == 0)
+		return v3(0, 0, 1);
+	return v3(dy, -dx, 0);
+}
+
+static struct aabb text_bounds(const struct object *o)
+{
+	const struct text *T = (const struct text *)o;
+	if (!(T->lo[0] <= T->hi[0])) /* no characters: unbounded, as in POV-Ray */
+		return (struct aabb){v3(-INFINITY, -INFINITY, -INFINITY), v3(INFINITY, INFINITY, INFINITY)};
+	return (struct aabb){v3(T->lo[0], T->lo[1], T->z0), v3(T->hi[0], T->hi[1], T->z1)};
+}
+
+static struct object *text_copy(const struct object *o)
+{
+	const struct text *T = (const struct text *)o;
+	struct text *c = malloc(sizeof *c);
+	if (!c) abort();
+	*c = *T;
+	c->seg = malloc((size_t)(T->nseg ? T->nseg : 1) * sizeof *c->seg);
+	c->glyph = malloc((size_t)(T->nglyph ? T->nglyph : 1) * sizeof *c->glyph);
+	if (!c->seg || !c->glyph) abort();
+	memcpy(c->seg, T->seg, (size_t)T->nseg * sizeof *c->seg);
+	memcpy(c->glyph, T->glyph, (size_t)T->nglyph * sizeof *c->glyph);
+	return &c->base;
+}
+
+static void text_destroy(struct object *o)
+{
+	struct text *T = (struct text *)o;
+	free(T->seg);
+	free(T->glyph);
+}
+
+static const struct object_ops text_ops = {
+	.name = "text",
+	.intersect = text_intersect,
+	.all_hits = text_all_hits,
+	.inside = text_inside,
+	.normal = text_normal,
+	.bounds = text_bounds,
+	.copy = text_copy,
+	.destroy = text_destroy,
+};
+
+/* ---- building ---- */
+
+/* Append glyph outline ol, scaled by s and moved by (dx, dy), to T. */
+static void add_glyph(struct text *T, const struct ttf_outline *ol, double s, double dx, double dy)
+{
+	if (ol->n == 0)
+		return;
+	T->seg = realloc(T->seg, ((size_t)T->nseg + ol->n) * sizeof *T->seg);
+	T->glyph = realloc(T->glyph, ((size_t)T->nglyph + 1) * sizeof *T->glyph);
+	if (!T->seg || !T->glyph) abort();
+	struct tglyph *g = &T->glyph[T->nglyph++];
+	g->first = T->nseg;
+	g->n = (int)ol->n;
+	g->lo[0] = g->lo[1] = INFINITY;
+	g->hi[0] = g->hi[1] = -INFINITY;
+	for (size_t i = 0; i < ol->n; i++) {
+		const struct ttf_piece *p = &ol->p[i];
+		struct tseg *q = &T->seg[T->nseg++];
+		double x0 = p->x0 * s + dx, y0 = p->y0 * s + dy, x1 = p->x1 * s + dx, y1 = p->y1 * s + dy;
+		double cx = p->cx * s + dx, cy = p->cy * s + dy;
+		if (p->line) {
+			q->x[0] = x0, q->x[1] = x1 - x0, q->x[2] = 0;
+			q->y[0] = y0, q->y[1] = y1 - y0, q->y[2] = 0;
+		} else {
+			/* (1-u)^2 P0 + 2u(1-u) C + u^2 P1 */
+			q->x[0] = x0, q->x[1] = 2 * (cx - x0), q->x[2] = x0 - 2 * cx + x1;
+			q->y[0] = y0, q->y[1] = 2 * (cy - y0), q->y[2] = y0 - 2 * cy + y1;
+		}
+		extent(q->x, &q->lo[0], &q->hi[0]);
+		extent(q->y, &q->lo[1], &q->hi[1]);
+		for (int k = 0; k < 2; k++) {
+			g->lo[k] = fmin(g->lo[k], q->lo[k]);
+			g->hi[k] = fmax(g->hi[k], q->hi[k]);
+		}
+	}
+	for (int k = 0; k < 2; k++) {
+		T->lo[k] = fmin(T->lo[k], g->lo[k]);
+		T->hi[k] = fmax(T->hi[k], g->hi[k]);
+	}
+}
+
+struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
+                        double off_y, struct srcpos pos, uint32_t *bad_glyph)
+{
+	struct text *T = calloc(1, sizeof *T);
+	if (!T) abort();
+	object_init(&T->base, &text_ops, pos);
+	T->z0 = fmin(0, thickness);
+	T->z1 = fmax(0, thickness);
+	T->zfront = 0;
+	T->lo[0] = T->lo[1] = INFINITY;
+	T->hi[0] = T->hi[1] = -INFINITY;
+	if (bad_glyph)
+		*bad_glyph = 0;
+	double s = 1.0 / ttf_units_per_em(font);
+	double pen_x = 0, pen_y = 0;
+	unsigned prev = 0;
+	for (size_t i = 0; i < n; i++) {
+		unsigned g = ttf_glyph_index(font, codes[i]);
+		struct ttf_metrics m;
+		struct ttf_outline ol;
+		if (!ttf_glyph_metrics(font, g, &m) || !ttf_glyph_outline(font, g, &ol)) {
+			if (bad_glyph && !*bad_glyph)
+				*bad_glyph = codes[i] ? codes[i] : 0xFFFFFFFFu;
+			continue;
+		}
+		if (i == 0)
+			pen_x = -m.xmin * s;
+		else
+			pen_x += ttf_kerning(font, prev, g) * s;
+		if (ol.n) {
+			add_glyph(T, &ol, s, pen_x, pen_y);
+		} else {
+			/* POV-Ray's bounds take in the pen position of an empty
+			 * glyph (a space). */
+			T->lo[0] = fmin(T->lo[0], pen_x);
+			T->hi[0] = fmax(T->hi[0], pen_x);
+			T->lo[1] = fmin(T->lo[1], pen_y);
+			T->hi[1] = fmax(T->hi[1], pen_y);
+		}
+		ttf_outline_free(&ol);
+		pen_x += m.advance * s + off_x;
+		pen_y += off_y;
+		prev = g;
+	}
+	return &T->base;
+}

@@ -1,0 +1,316 @@
+/* text_parse.c: the text object statement, the search for its font file
+ * and the decoding of its string by the global charset. */
+#include "lang/parser.h"
+
+#include "font/ttf.h"
+#include "geom/shapes.h"
+
+#include <ctype.h>
+#include <dirent.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* The system's font folder, searched (with its subfolders, to this depth)
+ * after the scene's folders: a read-only library path for the file rule. */
+static const char SYSTEM_FONTS[] = "/usr/share/fonts/truetype";
+enum { SYSTEM_FONTS_DEPTH = 3 };
+
+/* POV-Ray's built-in fonts, by `internal` number. */
+static const char *const internal_fonts[] = {"povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf"};
+
+/* POV-Ray's own fonts are not ours to ship: when a scene names one that
+ * is not installed, a free font of about the same metrics is used. */
+static const struct {
+	const char *pov;
+	const char *subst[2];
+} substitutes[] = {
+	{"timrom.ttf", {"LiberationSerif-Regular.ttf", "DejaVuSerif.ttf"}},
+	{"cyrvetic.ttf", {"LiberationSans-Regular.ttf", "DejaVuSans.ttf"}},
+	{"crystal.ttf", {"LiberationMono-Regular.ttf", "DejaVuSansMono.ttf"}},
+};
+
+static bool readable_file(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0 && S_ISREG(st.st_mode) && access(path, R_OK) == 0;
+}
+
+/* dir/name if it is a readable file: malloc'd, else NULL. */
+static char *try_in(const char *dir, const char *name)
+{
+	char buf[PATH_MAX];
+	if ((size_t)snprintf(buf, sizeof buf, "%s/%s", dir, name) >= sizeof buf)
+		return NULL;
+	if (!readable_file(buf))
+		return NULL;
+	char *c = strdup(buf);
+	if (!c) abort();
+	return c;
+}
+
+/* name in dir or its subfolders (depth levels down), in name order so the
+ * choice does not depend on the file system's order. */
+static int cmp_names(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static char *find_below(const char *dir, const char *name, int depth)
+{
+	char *hit = try_in(dir, name);
+	if (hit || depth == 0)
+		return hit;
+	DIR *d = opendir(dir);
+	if (!d)
+		return NULL;
+	char **subs = NULL;
+	size_t n = 0, cap = 0;
+	struct dirent *e;
+	while ((e = readdir(d))) {
+		if (e->d_name[0] == '.')
+			continue;
+		char buf[PATH_MAX];
+		struct stat st;
+		if ((size_t)snprintf(buf, sizeof buf, "%s/%s", dir, e->d_name) >= sizeof buf || stat(buf, &st) != 0 ||
+		    !S_ISDIR(st.st_mode))
+			continue;
+		if (n == cap) {
+			cap = cap ? 2 * cap : 16;
+			subs = realloc(subs, cap * sizeof *subs);
+			if (!subs) abort();
+		}
+		subs[n] = strdup(buf);
+		if (!subs[n]) abort();
+		n++;
+	}
+	closedir(d);
+	if (n)
+		qsort(subs, n, sizeof *subs, cmp_names);
+	for (size_t i = 0; i < n; i++) {
+		if (!hit)
+			hit = find_below(subs[i], name, depth - 1);
+		free(subs[i]);
+	}
+	free(subs);
+	return hit;
+}
+
+/* The folder of file `file` of the parse (malloc'd), or NULL. */
+static char *folder_of(struct parser *p, uint32_t file)
+{
+	const struct srcfile *sf = src_file(p->sm, file);
+	const char *slash = sf ? strrchr(sf->path, '/') : NULL;
+	if (!slash)
+		return NULL;
+	char *c = malloc((size_t)(slash - sf->path) + 2);
+	if (!c) abort();
+	if (slash == sf->path)
+		strcpy(c, "/");
+	else
+		sprintf(c, "%.*s", (int)(slash - sf->path), sf->path);
+	return c;
+}
+
+/* Search the scene's places for name: the folder of the file holding the
+ * statement, the scene's folder, the current folder, the +L paths, the
+ * stdlib. *system is set when it was found in the system's fonts instead
+ * (searched last). malloc'd path, or NULL. */
+static char *search(struct parser *p, const char *name, uint32_t from, bool *system)
+{
+	*system = false;
+	if (name[0] == '/') {
+		if (!readable_file(name))
+			return NULL;
+		char *c = strdup(name);
+		if (!c) abort();
+		return c;
+	}
+	char *hit = NULL;
+	uint32_t files[2] = {from, p->frames[0].file};
+	for (int i = 0; i < 2 && !hit; i++) {
+		char *dir = folder_of(p, files[i]);
+		if (dir)
+			hit = try_in(dir, name);
+		free(dir);
+	}
+	if (!hit && readable_file(name)) {
+		hit = strdup(name);
+		if (!hit) abort();
+	}
+	for (size_t i = 0; !hit && i < p->o->nlib_paths; i++)
+		hit = try_in(p->o->lib_paths[i], name);
+	if (!hit && p->o->stdlib_dir)
+		hit = try_in(p->o->stdlib_dir, name);
+	if (!hit && !strchr(name, '/')) {
+		hit = find_below(SYSTEM_FONTS, name, SYSTEM_FONTS_DEPTH);
+		*system = hit != NULL;
+	}
+	return hit;
+}
+
+/* Is the resolved path inside the system's font folder? */
+static bool in_system_fonts(const char *path)
+{
+	char *r = realpath(path, NULL), *root = realpath(SYSTEM_FONTS, NULL);
+	size_t n = root ? strlen(root) : 0;
+	bool in = r && root && strncmp(r, root, n) == 0 && r[n] == '/';
+	free(r);
+	free(root);
+	return in;
+}
+
+static void free_font_cb(void *f) { ttf_free(f); }
+
+/* The font the scene names, found and loaded (the caller owns it); a
+ * substitute with a warning for POV-Ray's own fonts when they are not
+ * installed; an error at `at` when there is none. */
+static struct ttf_font *open_font(struct parser *p, const char *name, struct srcpos at)
+{
+	bool system;
+	char *path = search(p, name, at.file, &system);
+	if (!path && !strchr(name, '.')) {
+		/* POV-Ray tries the name with .ttf appended. */
+		char buf[PATH_MAX];
+		snprintf(buf, sizeof buf, "%s.ttf", name);
+		path = search(p, buf, at.file, &system);
+	}
+	if (!path) {
+		const char *base = strrchr(name, '/') ? strrchr(name, '/') + 1 : name;
+		for (size_t i = 0; !path && i < sizeof substitutes / sizeof *substitutes; i++) {
+			if (strcasecmp(base, substitutes[i].pov) != 0)
+				continue;
+			for (int k = 0; !path && k < 2; k++) {
+				path = find_below(SYSTEM_FONTS, substitutes[i].subst[k], SYSTEM_FONTS_DEPTH);
+				if (path) {
+					system = true;
+					parse_warning_at(p, at, "font \"%s\" not found (it comes with POV-Ray): using %s, "
+					                 "a free font of similar metrics", name, path);
+				}
+			}
+		}
+	}
+	if (!path)
+		parse_error_at(p, at, "cannot find font file \"%s\" (searched the scene's folder, the current folder, "
+		               "+L paths, the stdlib and %s)", name, SYSTEM_FONTS);
+	int slot = parse_own(p, path, free);
+	if (!system && !in_system_fonts(path))
+		parse_check_access(p, path, name, false, "text", at);
+	char err[256];
+	struct ttf_font *f = ttf_load(path, err, sizeof err);
+	if (!f)
+		parse_error_at(p, at, "cannot use font file \"%s\": %s", name, err);
+	parse_release(p, slot);
+	free(path);
+	return f;
+}
+
+/* The length of the UTF-8 sequence at s (n bytes left) and its code point
+ * in *c; 0 if it is not a valid sequence. */
+static int utf8_seq(const unsigned char *s, size_t n, uint32_t *c)
+{
+	int len;
+	uint32_t v, min;
+	if (s[0] < 0x80)
+		return *c = s[0], 1;
+	if ((s[0] & 0xE0) == 0xC0) len = 2, v = s[0] & 0x1F, min = 0x80;
+	else if ((s[0] & 0xF0) == 0xE0) len = 3, v = s[0] & 0x0F, min = 0x800;
+	else if ((s[0] & 0xF8) == 0xF0) len = 4, v = s[0] & 0x07, min = 0x10000;
+	else return 0;
+	if ((size_t)len > n)
+		return 0;
+	for (int i = 1; i < len; i++) {
+		if ((s[i] & 0xC0) != 0x80)
+			return 0;
+		v = v << 6 | (s[i] & 0x3F);
+	}
+	if (v < min || v > 0x10FFFF || (v >= 0xD800 && v <= 0xDFFF))
+		return 0;
+	*c = v;
+	return len;
+}
+
+/* The code points of string s by the scene's charset, into a malloc'd
+ * array (*n of them). A string holds UTF-8 and, from \uNNNN escapes below
+ * 256, single bytes (lex.c): a byte that begins no UTF-8 sequence is that
+ * code. With charset ascii (POV-Ray's default) a UTF-8 sequence from the
+ * file becomes one space per byte, with a warning, as POV-Ray does. */
+static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpos at)
+{
+	size_t len = strlen(s);
+	uint32_t *out = malloc((len ? len : 1) * sizeof *out);
+	if (!out) abort();
+	const unsigned char *u = (const unsigned char *)s;
+	bool ascii = p->scene->gs.charset == 0;
+	bool warned = false;
+	size_t k = 0;
+	for (size_t i = 0; i < len;) {
+		uint32_t c;
+		int l = utf8_seq(u + i, len - i, &c);
+		if (l == 0) {
+			out[k++] = u[i++];
+			continue;
+		}
+		if (ascii && l > 1) {
+			if (!warned)
+				parse_warning_at(p, at, "non-ASCII character in text with charset ascii: replaced by spaces "
+				                 "(global_settings { charset utf8 } reads it)");
+			warned = true;
+			for (int j = 0; j < l; j++)
+				out[k++] = ' ';
+			i += (size_t)l;
+			continue;
+		}
+		out[k++] = c;
+		i += (size_t)l;
+	}
+	*n = k;
+	return out;
+}
+
+/* text '{' ( ttf STRING | internal FLOAT ) STRING FLOAT [','] VECTOR
+ *   { object_modifier } '}'
+ * The current token is the first after '{'; reads up to the modifiers. */
+struct object *parse_text(struct parser *p, struct srcpos at)
+{
+	struct srcpos fat = parse_peek(p)->pos;
+	const char *name;
+	if (parse_accept_kw(p, KW_TTF)) {
+		fat = parse_peek(p)->pos;
+		name = parse_string(p);
+	} else if (parse_accept_kw(p, KW_INTERNAL)) {
+		double k = parse_float(p);
+		/* POV-Ray: an out of range number is font 0. */
+		int i = k >= 0 && k < 4 ? (int)k : 0;
+		name = internal_fonts[i];
+	} else {
+		parse_expected(p, "ttf or internal");
+	}
+	struct ttf_font *font = open_font(p, name, fat);
+	int fslot = parse_own(p, font, free_font_cb);
+	struct srcpos sat = parse_peek(p)->pos;
+	const char *str = parse_string(p);
+	parse_accept(p, TOK_COMMA);
+	double thick = parse_float(p);
+	parse_accept(p, TOK_COMMA);
+	vec3 off = parse_vector(p);
+	size_t n;
+	uint32_t *codes = decode(p, str, &n, sat);
+	int cslot = parse_own(p, codes, free);
+	uint32_t bad;
+	struct object *o = text_new(font, codes, n, thick, off.x, off.y, at, &bad);
+	if (bad) {
+		object_free(o);
+		parse_error_at(p, fat, "font file \"%s\" is damaged: the glyph of character U+%04X cannot be read", name,
+		               bad == 0xFFFFFFFFu ? 0 : bad);
+	}
+	parse_release(p, cslot);
+	free(codes);
+	parse_release(p, fslot);
+	ttf_free(font);
+	return o;
+}
