@@ -652,11 +652,19 @@ static struct mesh_data *data_new(struct mesh_builder *b)
 			d->tri_uv = copy_idx(d->tri, n);
 	}
 
+	/* POV-Ray's mesh2 extents include the corners of the degenerate faces
+	 * it drops (measured with max_extent: a face <3,4,4> reaches vertex
+	 * 4); its mesh extents do not. */
+	struct aabb dropped = aabb_empty();
 	uint32_t kept = 0;
 	for (uint32_t i = 0; i < n; i++) {
 		const struct idx3 *f = &d->tri[i];
-		if (tri_degenerate(d->verts[f->i[0]], d->verts[f->i[1]], d->verts[f->i[2]]))
+		if (tri_degenerate(d->verts[f->i[0]], d->verts[f->i[1]], d->verts[f->i[2]])) {
+			if (kind == MESH_KIND_MESH2)
+				for (int k = 0; k < 3; k++)
+					dropped = aabb_add_point(dropped, d->verts[f->i[k]]);
 			continue;
+		}
 		d->tri[kept] = d->tri[i];
 		if (d->tri_n) d->tri_n[kept] = d->tri_n[i];
 		if (d->tri_uv) d->tri_uv[kept] = d->tri_uv[i];
@@ -669,13 +677,16 @@ static struct mesh_data *data_new(struct mesh_builder *b)
 	d->tri_uv = resize(d->tri_uv, kept, sizeof *d->tri_uv);
 	d->tri_tex = resize(d->tri_tex, kept, sizeof *d->tri_tex);
 
-	d->box = (struct aabb){{0, 0, 0}, {0, 0, 0}};
+	d->box = dropped;
 	if (kept > 0) {
 		build_hierarchy(d);
 		const struct mesh_node *root = &d->nodes[0];
-		d->box.lo = v3(root->box[0][0], root->box[0][1], root->box[0][2]);
-		d->box.hi = v3(root->box[1][0], root->box[1][1], root->box[1][2]);
+		struct aabb tb = {v3(root->box[0][0], root->box[0][1], root->box[0][2]),
+		                  v3(root->box[1][0], root->box[1][1], root->box[1][2])};
+		d->box = aabb_union(d->box, tb);
 	}
+	if (!aabb_is_finite(d->box))
+		d->box = (struct aabb){{0, 0, 0}, {0, 0, 0}};
 	d->extent = fmax(v3_maxabs(d->box.lo), v3_maxabs(d->box.hi));
 	return d;
 }
@@ -748,7 +759,7 @@ static inline bool box_hit(const struct mesh_node *nd, const struct walk *w, dou
 
 static void record(struct walk *w, uint32_t tri, const struct tri_hit *th)
 {
-	struct hit h = {th->t, NULL, (int)tri, th->u, th->v};
+	struct hit h = {.t = th->t, .part = (int)tri, .u = th->u, .v = th->v};
 	switch (w->mode) {
 	case WALK_CLOSEST: /* h->obj is the caller's */
 		w->out[0].t = h.t;
@@ -898,7 +909,8 @@ static vec3 interpolate(const vec3 *list, const struct idx3 *idx, double u, doub
 	return v3_madd(r, list[idx->i[2]], v);
 }
 
-/* The flat normal (b - a) x (c - a), or for a face with normals the unit
+/* The flat normal (c - a) x (b - a) (POV-Ray's orientation, as for
+ * triangle), or for a face with normals the unit
  * vertex normals interpolated linearly (POV-Ray's smooth triangles), the
  * flat one where they cancel. */
 static vec3 mesh_normal(const struct object *o, vec3 p, const struct hit *h)
@@ -910,7 +922,7 @@ static vec3 mesh_normal(const struct object *o, vec3 p, const struct hit *h)
 	uint32_t i = face_of(d, p, h, &u, &v);
 	const struct idx3 *f = &d->tri[i];
 	vec3 a = d->verts[f->i[0]];
-	vec3 flat = v3_cross(v3_sub(d->verts[f->i[1]], a), v3_sub(d->verts[f->i[2]], a));
+	vec3 flat = v3_cross(v3_sub(d->verts[f->i[2]], a), v3_sub(d->verts[f->i[1]], a));
 	if (d->tri_n && d->tri_n[i].i[0] != MESH_NONE) {
 		vec3 n = interpolate(d->normals, &d->tri_n[i], u, v);
 		double nn = v3_dot(n, n);
