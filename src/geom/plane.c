@@ -17,7 +17,11 @@ static bool plane_intersect(const struct object *o, const struct ray *r, double 
 	double dn = v3_dot(r->dir, p->n);
 	if (dn == 0)
 		return false; /* parallel: never crosses (lying in it counts as no hit) */
-	double t = (p->d - v3_dot(r->org, p->n)) / dn;
+	/* Multiplied by the reciprocal, as box.c's slab test does: a plane
+	 * and a box face that coincide then give the same t to the bit, and
+	 * the tie goes the same way on every ray (no speckles where a box
+	 * stands on a plane). */
+	double t = (p->d - v3_dot(r->org, p->n)) * (1.0 / dn);
 	if (!(t > tmin && t < tmax))
 		return false;
 	h->t = t;
