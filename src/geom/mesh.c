@@ -459,40 +459,6 @@ static uint64_t spread3(uint64_t x)
 	return x;
 }
 
-/* Sort the keys by their bits from `low` up: least significant digit
- * first, 11 bits at a time, skipping digits every key shares. tmp has
- * room for n keys; the result is in *keys (which may become tmp's array). */
-static void radix_sort(uint64_t **keys, uint64_t **tmp, uint32_t n, int low)
-{
-	enum { DIGIT = 11, RADIX = 1 << DIGIT };
-	int passes = (64 - low + DIGIT - 1) / DIGIT;
-	uint32_t (*hist)[RADIX] = calloc((size_t)passes, sizeof *hist);
-	if (!hist) abort();
-	const uint64_t *k = *keys;
-	for (uint32_t i = 0; i < n; i++)
-		for (int p = 0; p < passes; p++)
-			hist[p][(k[i] >> (low + DIGIT * p)) & (RADIX - 1)]++;
-	for (int p = 0; p < passes; p++) {
-		int shift = low + DIGIT * p;
-		uint32_t *h = hist[p], sum = 0;
-		if (h[(k[0] >> shift) & (RADIX - 1)] == n)
-			continue; /* one digit for all: the order stays */
-		for (int d = 0; d < RADIX; d++) {
-			uint32_t c = h[d];
-			h[d] = sum;
-			sum += c;
-		}
-		const uint64_t *src = *keys;
-		uint64_t *dst = *tmp;
-		for (uint32_t i = 0; i < n; i++)
-			dst[h[(src[i] >> shift) & (RADIX - 1)]++] = src[i];
-		*tmp = *keys;
-		*keys = dst;
-		k = dst;
-	}
-	free(hist);
-}
-
 /* Where the range code[first, first+n) splits at its highest differing
  * bit (a boundary of the curve's octree), as an offset in 1..n-1; the
  * middle when all codes are equal. *bit: that bit, or -1. */
@@ -770,67 +736,189 @@ static void build_top(const struct build *b, uint32_t ni, uint32_t first, uint32
 	node_join(&b->nodes[ni], &b->nodes[l], &b->nodes[l + 1]);
 }
 
-/* Reorder a per-face array to the curve's order: entry i from the
- * triangle in the low `idbits` bits of key[i]. */
-static void permute(struct idx3 **arr, const uint64_t *key, uint32_t n, int idbits)
+/* The curve sort, in passes over the triangles that run on two threads
+ * when there are many (run2): first half here, second half on the other. */
+enum { DIGIT = 11, RADIX = 1 << DIGIT };
+
+struct sorter {
+	const struct mesh_data *d;
+	uint32_t n;
+	bool par;
+	double lo[2][3], hi[2][3]; /* doubled centroids' bounds of each half */
+	double clo[3], q, cells;   /* the grid */
+	int idbits;
+	uint64_t *src, *dst;       /* keys, and room for the next radix pass */
+	int shift;                 /* the digit of this pass */
+	uint32_t hist[2][RADIX];   /* its counts in each half, then where each half's keys go */
+	struct idx3 *const *from[4]; /* per-face arrays to reorder (NULL: none) */
+	struct idx3 *to[4];
+};
+
+static void run2(void (*fn)(struct sorter *, int, uint32_t, uint32_t), struct sorter *s);
+
+struct run2_arg {
+	void (*fn)(struct sorter *, int, uint32_t, uint32_t);
+	struct sorter *s;
+};
+
+static void *run2_main(void *p)
 {
-	if (!*arr)
-		return;
-	struct idx3 *out = malloc((size_t)n * sizeof *out);
-	if (!out) abort();
-	uint64_t mask = ((uint64_t)1 << idbits) - 1;
-	for (uint32_t i = 0; i < n; i++)
-		out[i] = (*arr)[key[i] & mask];
-	free(*arr);
-	*arr = out;
+	struct run2_arg *a = p;
+	a->fn(a->s, 1, a->s->n / 2, a->s->n);
+	return NULL;
+}
+
+static void run2(void (*fn)(struct sorter *, int, uint32_t, uint32_t), struct sorter *s)
+{
+	struct run2_arg a = {fn, s};
+	pthread_t th;
+	bool threaded = s->par && pthread_create(&th, NULL, run2_main, &a) == 0;
+	fn(s, 0, 0, s->n / 2);
+	if (threaded)
+		pthread_join(th, NULL);
+	else
+		run2_main(&a);
+}
+
+/* A triangle's doubled centroid (of its box). */
+static vec3 tri_centroid2(const struct mesh_data *d, uint32_t i)
+{
+	const struct idx3 *t = &d->tri[i];
+	vec3 p = d->verts[t->i[0]], q = d->verts[t->i[1]], r = d->verts[t->i[2]];
+	return v3_add(vmin(p, vmin(q, r)), vmax(p, vmax(q, r)));
+}
+
+static void sort_bounds(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	for (uint32_t i = i0; i < i1; i++) {
+		vec3 c = tri_centroid2(s->d, i);
+		lo = vmin(lo, c);
+		hi = vmax(hi, c);
+	}
+	double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+	memcpy(s->lo[part], l, sizeof l);
+	memcpy(s->hi[part], h, sizeof h);
+}
+
+static void sort_keys(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	(void)part;
+	for (uint32_t i = i0; i < i1; i++) {
+		vec3 c = tri_centroid2(s->d, i);
+		double cc[3] = {c.x, c.y, c.z};
+		uint64_t g[3];
+		for (int a = 0; a < 3; a++) {
+			double x = (cc[a] - s->clo[a]) * s->q;
+			g[a] = x > 0 ? x < s->cells ? (uint64_t)x : (uint64_t)s->cells : 0; /* NaN: 0 */
+		}
+		uint64_t m = spread3(g[0]) | spread3(g[1]) << 1 | spread3(g[2]) << 2;
+		s->src[i] = m << s->idbits | i;
+	}
+}
+
+static void sort_count(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	uint32_t *h = s->hist[part];
+	memset(h, 0, sizeof s->hist[part]);
+	for (uint32_t i = i0; i < i1; i++)
+		h[(s->src[i] >> s->shift) & (RADIX - 1)]++;
+}
+
+static void sort_scatter(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	uint32_t *h = s->hist[part];
+	for (uint32_t i = i0; i < i1; i++)
+		s->dst[h[(s->src[i] >> s->shift) & (RADIX - 1)]++] = s->src[i];
+}
+
+static void sort_permute(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	(void)part;
+	uint64_t mask = ((uint64_t)1 << s->idbits) - 1;
+	for (int a = 0; a < 4; a++)
+		if (*s->from[a])
+			for (uint32_t i = i0; i < i1; i++)
+				s->to[a][i] = (*s->from[a])[s->src[i] & mask];
+}
+
+/* Sort d's triangles along the curve: reorder its per-face arrays and
+ * return the sorted keys (n of them; the caller frees them). Each key is
+ * a Morton code above the triangle's index: the index takes the low bits
+ * it needs (*idbits), the code up to 21 bits per axis of the rest, on a
+ * grid of cubic cells (so that a flat mesh is not cut into slivers).
+ * Equal codes are ordered, and later split, by index. The sort is least
+ * significant digit first, 11 bits at a time, skipping digits every key
+ * shares; each pass counts then scatters both halves, the second half's
+ * keys of each digit going after the first's, so the sort stays stable. */
+static uint64_t *curve_sort(struct mesh_data *d, int *idbits)
+{
+	uint32_t n = d->ntris;
+	struct sorter *s = calloc(1, sizeof *s);
+	if (!s) abort();
+	s->d = d;
+	s->n = n;
+	s->par = n >= PAR_MIN;
+	run2(sort_bounds, s);
+	double ext = 0;
+	for (int a = 0; a < 3; a++) {
+		s->clo[a] = fmin(s->lo[0][a], s->lo[1][a]);
+		ext = fmax(ext, fmax(s->hi[0][a], s->hi[1][a]) - s->clo[a]);
+	}
+	s->idbits = 1;
+	while (s->idbits < 32 && ((uint64_t)1 << s->idbits) < n)
+		s->idbits++;
+	int axbits = (64 - s->idbits) / 3 < 21 ? (64 - s->idbits) / 3 : 21;
+	s->cells = (double)(((uint64_t)1 << axbits) - 1);
+	s->q = ext > 0 && isfinite(ext) ? s->cells / ext : 0;
+	s->src = malloc((size_t)n * sizeof *s->src);
+	s->dst = malloc((size_t)n * sizeof *s->dst);
+	if (!s->src || !s->dst) abort();
+	run2(sort_keys, s);
+	for (s->shift = s->idbits; s->shift < 64; s->shift += DIGIT) {
+		run2(sort_count, s);
+		uint32_t first = (uint32_t)(s->src[0] >> s->shift) & (RADIX - 1);
+		if (s->hist[0][first] + s->hist[1][first] == n)
+			continue; /* one digit for all: the order stays */
+		uint32_t sum = 0;
+		for (int k = 0; k < RADIX; k++) {
+			uint32_t c0 = s->hist[0][k], c1 = s->hist[1][k];
+			s->hist[0][k] = sum;
+			s->hist[1][k] = sum + c0;
+			sum += c0 + c1;
+		}
+		run2(sort_scatter, s);
+		uint64_t *t = s->src;
+		s->src = s->dst;
+		s->dst = t;
+	}
+	free(s->dst);
+	struct idx3 **arrs[4] = {&d->tri, &d->tri_n, &d->tri_uv, &d->tri_tex};
+	for (int a = 0; a < 4; a++) {
+		s->from[a] = arrs[a];
+		s->to[a] = NULL;
+		if (*arrs[a]) {
+			s->to[a] = malloc((size_t)n * sizeof *s->to[a]);
+			if (!s->to[a]) abort();
+		}
+	}
+	run2(sort_permute, s);
+	for (int a = 0; a < 4; a++)
+		if (*arrs[a]) {
+			free(*arrs[a]);
+			*arrs[a] = s->to[a];
+		}
+	uint64_t *code = s->src;
+	*idbits = s->idbits;
+	free(s);
+	return code;
 }
 
 static void build_hierarchy(struct mesh_data *d)
 {
 	uint32_t n = d->ntris;
-	/* Centroids (doubled, of the triangles' boxes) and their box. */
-	float (*cen)[3] = malloc((size_t)n * sizeof *cen);
-	uint64_t *code = malloc((size_t)n * sizeof *code), *tmp = malloc((size_t)n * sizeof *tmp);
-	if (!cen || !code || !tmp) abort();
-	double clo[3] = {INFINITY, INFINITY, INFINITY}, chi[3] = {-INFINITY, -INFINITY, -INFINITY};
-	for (uint32_t i = 0; i < n; i++) {
-		const struct idx3 *t = &d->tri[i];
-		vec3 p = d->verts[t->i[0]], q = d->verts[t->i[1]], s = d->verts[t->i[2]];
-		vec3 c = v3_add(vmin(p, vmin(q, s)), vmax(p, vmax(q, s)));
-		double cc[3] = {c.x, c.y, c.z};
-		for (int a = 0; a < 3; a++) {
-			cen[i][a] = to_float(cc[a]);
-			clo[a] = cen[i][a] < clo[a] ? cen[i][a] : clo[a];
-			chi[a] = cen[i][a] > chi[a] ? cen[i][a] : chi[a];
-		}
-	}
-	/* Each key is a Morton code above the triangle's index: the index
-	 * takes the low bits it needs, the code up to 21 bits per axis of the
-	 * rest, on a grid of cubic cells (so that a flat mesh is not cut into
-	 * slivers). Equal codes are then ordered, and split, by index. */
-	int idbits = 1;
-	while (idbits < 32 && ((uint64_t)1 << idbits) < n)
-		idbits++;
-	int axbits = (64 - idbits) / 3 < 21 ? (64 - idbits) / 3 : 21;
-	double cells = (double)(((uint64_t)1 << axbits) - 1);
-	double ext = fmax(chi[0] - clo[0], fmax(chi[1] - clo[1], chi[2] - clo[2]));
-	double q = ext > 0 ? cells / ext : 0;
-	for (uint32_t i = 0; i < n; i++) {
-		uint64_t c[3];
-		for (int a = 0; a < 3; a++) {
-			double x = (cen[i][a] - clo[a]) * q;
-			c[a] = x < 0 ? 0 : x > cells ? (uint64_t)cells : (uint64_t)x;
-		}
-		uint64_t m = spread3(c[0]) | spread3(c[1]) << 1 | spread3(c[2]) << 2;
-		code[i] = m << idbits | i;
-	}
-	free(cen);
-	radix_sort(&code, &tmp, n, idbits);
-	free(tmp);
-	permute(&d->tri, code, n, idbits);
-	permute(&d->tri_n, code, n, idbits);
-	permute(&d->tri_uv, code, n, idbits);
-	permute(&d->tri_tex, code, n, idbits);
+	int idbits;
+	uint64_t *code = curve_sort(d, &idbits);
 
 	uint32_t *cfirst = malloc(((size_t)n + 1) * sizeof *cfirst);
 	if (!cfirst) abort();
