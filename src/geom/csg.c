@@ -203,6 +203,7 @@ static bool csg_intersect(const struct object *o, const struct ray *r, double tm
 		struct hit th;
 		if (walk_group(c, r, tmin, found ? h->t : tmax, &th, keep_diff_other)) {
 			*h = th;
+			h->inverted = !h->inverted; /* a subtracted child's surface faces inward */
 			found = true;
 		}
 		return found;
@@ -256,20 +257,24 @@ static struct aabb csg_bounds(const struct object *o)
 		for (size_t i = 0; i < c->n; i++)
 			b = aabb_union(b, object_world_bounds(c->kids[i]));
 		return b;
-	case CSG_INTERSECTION: {
-		struct aabb inf = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
-		b = inf;
+	case CSG_INTERSECTION:
+	case CSG_DIFFERENCE: {
+		/* The children's boxes cut one another; a difference is the
+		 * intersection of the first child with the others inverted (an
+		 * inverse plane is the other half-space; other inverse solids
+		 * are unbounded). Measured in POV-Ray: six axis-aligned planes
+		 * give their cube, and a box unbounded on any axis, or empty,
+		 * is infinite -- also as the child of another intersection. */
+		b = (struct aabb){{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
 		for (size_t i = 0; i < c->n; i++) {
-			struct aabb k = object_world_bounds(c->kids[i]);
+			struct aabb k = object_world_bounds_raw(c->kids[i], c->kind == CSG_DIFFERENCE && i > 0);
 			b.lo = v3_max(b.lo, k.lo);
 			b.hi = v3_min(b.hi, k.hi);
 		}
-		if (c->n == 0 || b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
-			b.lo = b.hi = v3(0, 0, 0); /* empty: nothing can be hit */
+		if (c->n == 0 || !aabb_is_finite(b) || b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
+			b = (struct aabb){{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
 		return b;
 	}
-	case CSG_DIFFERENCE:
-		return c->n ? object_world_bounds(c->kids[0]) : (struct aabb){{0, 0, 0}, {0, 0, 0}};
 	}
 	return b;
 }

@@ -8,15 +8,19 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 enum {
-	BINS = 16,       /* SAH bins per axis */
-	LEAF_MIN = 2,    /* nodes this small are leaves: halves the node count of sparse meshes */
-	LEAF_MAX = 4,    /* triangles per leaf at most */
-	DEPTH_MAX = 64,  /* past this depth, nodes are split at the middle of their list */
-	PAR_MIN = 1 << 16, /* subtrees this large are built on a thread of their own... */
-	PAR_DEPTH = 2,     /* ...down to this depth (at most 4 subtrees at once) */
-	STACK_MAX = 128, /* > DEPTH_MAX + 32 + 1: the deepest tree a 2^32 list can give */
+	BINS = 16,         /* SAH bins per axis */
+	LEAF_MIN = 2,      /* leaves hold at most this many triangles */
+	CLUSTER_MAX = 8,   /* triangles per cluster at most (see the hierarchy) */
+	DEPTH_MAX = 64,    /* past this depth, upper nodes are split at the middle of their list */
+	PAR_MIN = 1 << 14, /* this many clusters (triangles, for the clusters' subtrees) are built on
+	                    * two threads... */
+	PAR_DEPTH = 2,     /* ...down to this depth (at most 4 upper subtrees at once) */
+	STACK_MAX = 128,   /* > DEPTH_MAX + 32 + CLUSTER_MAX: the deepest tree a 2^32 list can give */
 };
 
 struct idx3 {
@@ -299,316 +303,671 @@ static void data_free(struct mesh_data *d)
 	free(d);
 }
 
-/* ---- the hierarchy: binned SAH over triangle boxes ---- */
+/* ---- the hierarchy ----
+ *
+ * Built in two parts, after Pantaleoni and Luebke's HLBVH (2010): the
+ * triangles are sorted along a Morton curve through their centroids and
+ * cut, at the curve's own octree boundaries, into clusters of at most
+ * CLUSTER_MAX neighbouring triangles; inside a cluster the octree
+ * boundaries are the splits. Over the clusters, weighted by their
+ * triangle counts, a binned surface area heuristic (Wald 2007) builds the
+ * upper levels, where the choice of split matters most. Sorting, the
+ * clusters and their subtrees cost a few passes over the triangles; only
+ * the upper part, over several times fewer items, pays for binning.
+ *
+ * The node array holds the upper tree first (a tree over k clusters has
+ * 2k - 1 nodes, so each subtree's place is known before it is built), then
+ * each cluster's nodes below its root in a range of its own. Triangles are
+ * stored in curve order, which is also the order of every leaf. */
 
-/* A triangle's box and centroid, in single precision: they only steer the
- * split choice. The node boxes are computed exactly from the vertices. */
-struct bref {
-	float lo[3], hi[3];
+/* Four floats at once: SSE where the compiler targets it (every x86-64),
+ * plain loops elsewhere. Boxes use lanes 0-2; lane 3 is either ignored
+ * (min/max) or cleared before arithmetic. */
+#if defined(__SSE2__)
+typedef __m128 f4;
+static inline f4 f4_load(const float *p) { return _mm_load_ps(p); }
+static inline void f4_store(float *p, f4 a) { _mm_store_ps(p, a); }
+static inline f4 f4_min(f4 a, f4 b) { return _mm_min_ps(a, b); }
+static inline f4 f4_max(f4 a, f4 b) { return _mm_max_ps(a, b); }
+static inline f4 f4_add(f4 a, f4 b) { return _mm_add_ps(a, b); }
+static inline f4 f4_splat(float x) { return _mm_set1_ps(x); }
+static inline f4 f4_xyz(f4 a) { return _mm_and_ps(a, _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1))); }
+#else
+typedef struct {
+	float v[4];
+} f4;
+static inline f4 f4_load(const float *p) { f4 r; memcpy(r.v, p, sizeof r.v); return r; }
+static inline void f4_store(float *p, f4 a) { memcpy(p, a.v, sizeof a.v); }
+static inline f4 f4_min(f4 a, f4 b) { for (int i = 0; i < 4; i++) a.v[i] = a.v[i] < b.v[i] ? a.v[i] : b.v[i]; return a; }
+static inline f4 f4_max(f4 a, f4 b) { for (int i = 0; i < 4; i++) a.v[i] = a.v[i] > b.v[i] ? a.v[i] : b.v[i]; return a; }
+static inline f4 f4_add(f4 a, f4 b) { for (int i = 0; i < 4; i++) a.v[i] += b.v[i]; return a; }
+static inline f4 f4_splat(float x) { return (f4){{x, x, x, x}}; }
+static inline f4 f4_xyz(f4 a) { a.v[3] = 0; return a; }
+#endif
+
+/* A cluster as the upper build sees it: its box in single precision (it
+ * only steers the split; node boxes are exact), f[0..2] the lower corner,
+ * f[3] the cluster's index (its bits), f[4..6] the upper corner, f[7] its
+ * triangle count. Centroids are kept doubled (lo + hi). */
+struct cref {
+	_Alignas(16) float f[8];
+};
+
+static inline uint32_t cref_id(const struct cref *r)
+{
 	uint32_t id;
+	memcpy(&id, &r->f[3], sizeof id);
+	return id;
+}
+
+/* A box over lanes 0-2: cluster boxes or doubled centroids. */
+struct fbox {
+	_Alignas(16) float lo[4], hi[4];
 };
 
 struct bin {
-	float lo[3], hi[3];
-	uint32_t n;
+	struct fbox box;  /* the clusters' boxes */
+	struct fbox cent; /* their doubled centroids */
+	uint32_t n;       /* their triangles */
 };
 
 struct build {
-	struct bref *ref;
 	struct mesh_node *nodes;
-	uint32_t nnodes;
 	const vec3 *verts;
-	const struct idx3 *tri;
+	const struct idx3 *tri;     /* in curve order */
+	const uint64_t *code;       /* the triangles' Morton codes, ascending */
+	const uint32_t *cfirst;     /* cluster k: triangles cfirst[k] .. cfirst[k+1] - 1 */
+	const struct mesh_node *croot; /* each cluster's root */
+	struct cref *cref;
 };
 
-static float to_float(double x)
+static void fbox_empty(struct fbox *b)
 {
-	return x > FLT_MAX ? FLT_MAX : x < -FLT_MAX ? -FLT_MAX : (float)x;
+	f4_store(b->lo, f4_splat(FLT_MAX));
+	f4_store(b->hi, f4_splat(-FLT_MAX));
 }
 
-static inline float centroid(const struct bref *r, int a) { return 0.5f * r->lo[a] + 0.5f * r->hi[a]; }
-
-static inline int bin_of(const struct bref *r, int a, float lo, float scale, int nb)
+static inline void fbox_join(struct fbox *b, const struct fbox *o)
 {
-	int k = (int)((centroid(r, a) - lo) * scale);
-	return k < 0 ? 0 : k >= nb ? nb - 1 : k;
+	f4_store(b->lo, f4_min(f4_load(b->lo), f4_load(o->lo)));
+	f4_store(b->hi, f4_max(f4_load(b->hi), f4_load(o->hi)));
 }
 
-static double half_area(const float lo[3], const float hi[3])
+/* Half the surface area of a box that is not empty. */
+static inline float half_area(const struct fbox *b)
 {
-	double dx = (double)hi[0] - lo[0], dy = (double)hi[1] - lo[1], dz = (double)hi[2] - lo[2];
-	if (dx < 0 || dy < 0 || dz < 0)
-		return 0;
+	float dx = b->hi[0] - b->lo[0], dy = b->hi[1] - b->lo[1], dz = b->hi[2] - b->lo[2];
 	return dx * dy + dy * dz + dz * dx;
 }
 
-static void box_from_vertices(struct build *b, struct mesh_node *nd, const struct bref *r, uint32_t n)
+/* A coordinate in single precision, within a quarter of the float range so
+ * that doubled centroids and their spreads stay finite. */
+static float to_float(double x)
 {
-	double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-	for (uint32_t i = 0; i < n; i++)
-		for (int k = 0; k < 3; k++) {
-			vec3 p = b->verts[b->tri[r[i].id].i[k]];
-			double c[3] = {p.x, p.y, p.z};
-			for (int a = 0; a < 3; a++) {
-				lo[a] = c[a] < lo[a] ? c[a] : lo[a];
-				hi[a] = c[a] > hi[a] ? c[a] : hi[a];
-			}
-		}
-	memcpy(nd->box[0], lo, sizeof lo);
-	memcpy(nd->box[1], hi, sizeof hi);
+	const double lim = FLT_MAX / 4;
+	return (float)(x > lim ? lim : x < -lim ? -lim : x);
 }
 
-/* Centroid bounds of a run of references. */
-struct cbox {
-	float lo[3], hi[3];
-};
-
-static void cbox_empty(struct cbox *c)
+/* Where a doubled centroid falls on `axis`, in bins: at least 0, since the
+ * centroid box's low side is exact, and at most nb. */
+static inline float bin_pos(const struct cref *r, int axis, float lo, float scale)
 {
-	for (int a = 0; a < 3; a++) {
-		c->lo[a] = FLT_MAX;
-		c->hi[a] = -FLT_MAX;
-	}
+	return (r->f[axis] + r->f[4 + axis] - lo) * scale;
 }
 
-static inline void cbox_add(struct cbox *c, const struct bref *r)
+/* Its bin: the position truncated, the upper end in the last bin. An item
+ * is left of boundary `split` exactly when bin_pos < split, so the
+ * partition needs no conversion and agrees with the binning. */
+static inline int bin_of(const struct cref *r, int axis, float lo, float scale, int nb)
 {
-	for (int a = 0; a < 3; a++) {
-		float x = centroid(r, a);
-		c->lo[a] = x < c->lo[a] ? x : c->lo[a];
-		c->hi[a] = x > c->hi[a] ? x : c->hi[a];
-	}
+	int k = (int)bin_pos(r, axis, lo, scale);
+	return k < nb - 1 ? k : nb - 1;
 }
 
-static void build_node(struct build *b, uint32_t ni, uint32_t first, uint32_t n, int depth, const struct cbox *cb);
-
-/* A subtree built on its own thread into its own node array (root at 0). */
-struct subtree {
-	struct build b;
-	uint32_t first, n;
-	int depth;
-	struct cbox cb;
-};
-
-static void *subtree_main(void *arg)
+/* The doubled centroids' box of n clusters, by scanning them. */
+static void cent_scan(struct fbox *c, const struct cref *r, uint32_t n)
 {
-	struct subtree *s = arg;
-	build_node(&s->b, 0, s->first, s->n, s->depth, &s->cb);
-	return NULL;
+	f4 lo = f4_splat(FLT_MAX), hi = f4_splat(-FLT_MAX);
+	for (uint32_t i = 0; i < n; i++) {
+		f4 x = f4_add(f4_xyz(f4_load(r[i].f)), f4_xyz(f4_load(r[i].f + 4)));
+		lo = f4_min(lo, x);
+		hi = f4_max(hi, x);
+	}
+	f4_store(c->lo, lo);
+	f4_store(c->hi, hi);
 }
 
-/* Build the children l (over nl references from first) and l + 1 (the nr
- * after them): the left one on another thread, the right one here. The
- * references of the two are disjoint ranges, so only the node arrays need
- * keeping apart; the left one's nodes are appended afterwards with their
- * child indices moved. The result is the tree the sequential build makes,
- * with its nodes in another order. */
-static void build_pair_parallel(struct build *b, uint32_t l, uint32_t first, uint32_t nl, uint32_t nr, int depth,
-                                const struct cbox *lc, const struct cbox *rc)
+static void node_join(struct mesh_node *nd, const struct mesh_node *L, const struct mesh_node *R)
 {
-	struct subtree s = {.b = *b, .first = first, .n = nl, .depth = depth, .cb = *lc};
-	s.b.nodes = malloc((2 * (size_t)nl - 1) * sizeof *s.b.nodes);
-	if (!s.b.nodes) abort();
-	s.b.nnodes = 1;
-	pthread_t th;
-	bool threaded = pthread_create(&th, NULL, subtree_main, &s) == 0;
-	if (!threaded)
-		subtree_main(&s);
-	build_node(b, l + 1, first + nl, nr, depth, rc);
-	if (threaded)
-		pthread_join(th, NULL);
-	/* Sub-node k >= 1 goes to off + k - 1; node 0 to l. */
-	uint32_t off = b->nnodes;
-	for (uint32_t k = 0; k < s.b.nnodes; k++) {
-		struct mesh_node nd = s.b.nodes[k];
-		if (nd.count == 0)
-			nd.first = off + nd.first - 1;
-		b->nodes[k == 0 ? l : off + k - 1] = nd;
-	}
-	b->nnodes += s.b.nnodes - 1;
-	free(s.b.nodes);
-}
-
-/* Build node ni over ref[first, first+n), whose centroids lie in *cb.
- * Wald's binned SAH (2007): the references are binned along the axis
- * where their centroids spread most, the best of the bin boundaries is
- * taken if it beats a leaf (traversal cost 1, triangle cost 1), and the
- * partition computes the children's centroid bounds on the way. */
-static void build_node(struct build *b, uint32_t ni, uint32_t first, uint32_t n, int depth, const struct cbox *cb)
-{
-	struct bref *r = b->ref + first;
-	int axis = 0;
-	for (int a = 1; a < 3; a++)
-		if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
-			axis = a;
-	float clo = cb->lo[axis], ext = cb->hi[axis] - clo;
-	int nb = n < BINS ? (int)n : BINS; /* few bins for small nodes: per-bin work would dominate */
-	float scale = ext > 0 ? (float)nb / ext : 0;
-	if (!isfinite(scale))
-		scale = 0; /* centroids a few denormals apart: no bins */
-
-	int split = 0;
-	double best = INFINITY;
-	if (scale > 0 && depth < DEPTH_MAX && n > LEAF_MIN) {
-		struct bin bins[BINS];
-		for (int k = 0; k < nb; k++) {
-			bins[k].n = 0;
-			for (int c = 0; c < 3; c++) {
-				bins[k].lo[c] = FLT_MAX;
-				bins[k].hi[c] = -FLT_MAX;
-			}
-		}
-		for (uint32_t i = 0; i < n; i++) {
-			struct bin *bn = &bins[bin_of(&r[i], axis, clo, scale, nb)];
-			bn->n++;
-			for (int c = 0; c < 3; c++) {
-				bn->lo[c] = r[i].lo[c] < bn->lo[c] ? r[i].lo[c] : bn->lo[c];
-				bn->hi[c] = r[i].hi[c] > bn->hi[c] ? r[i].hi[c] : bn->hi[c];
-			}
-		}
-		/* Right-hand sides of each boundary, then a sweep from the left;
-		 * the last right-hand box is the whole node's. */
-		double rarea[BINS];
-		uint32_t rn[BINS];
-		float lo[3] = {FLT_MAX, FLT_MAX, FLT_MAX}, hi[3] = {-FLT_MAX, -FLT_MAX, -FLT_MAX};
-		uint32_t cnt = 0;
-		for (int k = nb - 1; k >= 0; k--) {
-			for (int c = 0; c < 3; c++) {
-				lo[c] = bins[k].lo[c] < lo[c] ? bins[k].lo[c] : lo[c];
-				hi[c] = bins[k].hi[c] > hi[c] ? bins[k].hi[c] : hi[c];
-			}
-			cnt += bins[k].n;
-			rarea[k] = half_area(lo, hi);
-			rn[k] = cnt;
-		}
-		double area = half_area(lo, hi);
-		if (!(area > 0))
-			area = 1;
-		for (int c = 0; c < 3; c++) {
-			lo[c] = FLT_MAX;
-			hi[c] = -FLT_MAX;
-		}
-		cnt = 0;
-		for (int k = 0; k < nb - 1; k++) {
-			for (int c = 0; c < 3; c++) {
-				lo[c] = bins[k].lo[c] < lo[c] ? bins[k].lo[c] : lo[c];
-				hi[c] = bins[k].hi[c] > hi[c] ? bins[k].hi[c] : hi[c];
-			}
-			cnt += bins[k].n;
-			if (cnt == 0 || rn[k + 1] == 0)
-				continue;
-			double cost = 1 + (half_area(lo, hi) * cnt + rarea[k + 1] * rn[k + 1]) / area;
-			if (cost < best) {
-				best = cost;
-				split = k + 1;
-			}
-		}
-	}
-
-	struct mesh_node *nd = &b->nodes[ni];
-	if (n <= LEAF_MAX && (split == 0 || best >= (double)n)) {
-		nd->first = first;
-		nd->count = (uint16_t)n;
-		nd->axis = 0;
-		box_from_vertices(b, nd, r, n);
-		return;
-	}
-	struct cbox lc, rc;
-	cbox_empty(&lc);
-	cbox_empty(&rc);
-	uint32_t mid = 0;
-	if (split > 0) {
-		uint32_t i = 0, j = n;
-		while (i < j) {
-			if (bin_of(&r[i], axis, clo, scale, nb) < split) {
-				cbox_add(&lc, &r[i]);
-				i++;
-			} else {
-				cbox_add(&rc, &r[i]);
-				struct bref t = r[i];
-				r[i] = r[--j];
-				r[j] = t;
-			}
-		}
-		mid = i;
-	}
-	if (mid == 0 || mid == n) {
-		/* All centroids equal, or too deep: halve the list. */
-		mid = n / 2;
-		cbox_empty(&lc);
-		cbox_empty(&rc);
-		for (uint32_t i = 0; i < n; i++)
-			cbox_add(i < mid ? &lc : &rc, &r[i]);
-	}
-	uint32_t l = b->nnodes;
-	b->nnodes += 2;
-	nd->first = l;
-	nd->count = 0;
-	nd->axis = (uint16_t)axis;
-	if (n >= PAR_MIN && depth < PAR_DEPTH)
-		build_pair_parallel(b, l, first, mid, n - mid, depth + 1, &lc, &rc);
-	else {
-		build_node(b, l, first, mid, depth + 1, &lc);
-		build_node(b, l + 1, first + mid, n - mid, depth + 1, &rc);
-	}
-	nd = &b->nodes[ni];
-	const struct mesh_node *L = &b->nodes[l], *R = &b->nodes[l + 1];
 	for (int a = 0; a < 3; a++) {
 		nd->box[0][a] = L->box[0][a] < R->box[0][a] ? L->box[0][a] : R->box[0][a];
 		nd->box[1][a] = L->box[1][a] > R->box[1][a] ? L->box[1][a] : R->box[1][a];
 	}
 }
 
-/* Reorder a per-face array to the hierarchy's order. */
-static void permute(struct idx3 **arr, const struct bref *ref, uint32_t n)
+/* ---- sorting along the curve ---- */
+
+/* The 21 low bits of x spread to every third bit. */
+static uint64_t spread3(uint64_t x)
 {
-	if (!*arr)
+	x &= 0x1fffff;
+	x = (x | x << 32) & 0x1f00000000ffffULL;
+	x = (x | x << 16) & 0x1f0000ff0000ffULL;
+	x = (x | x << 8) & 0x100f00f00f00f00fULL;
+	x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+	x = (x | x << 2) & 0x1249249249249249ULL;
+	return x;
+}
+
+/* Where the range code[first, first+n) splits at its highest differing
+ * bit (a boundary of the curve's octree), as an offset in 1..n-1; the
+ * middle when all codes are equal. *bit: that bit, or -1. */
+static uint32_t curve_split(const uint64_t *code, uint32_t first, uint32_t n, int *bit)
+{
+	uint64_t a = code[first], b = code[first + n - 1];
+	if (a == b) {
+		*bit = -1;
+		return n / 2;
+	}
+#if defined(__GNUC__)
+	int k = 63 - __builtin_clzll(a ^ b);
+#else
+	int k = 63;
+	while (!((a ^ b) >> k & 1))
+		k--;
+#endif
+	*bit = k;
+	uint64_t v = b >> k << k; /* the first code with bit k set */
+	uint32_t lo = 0, hi = n - 1;  /* code[first+lo] < v <= code[first+hi] */
+	while (hi - lo > 1) {
+		uint32_t m = lo + (hi - lo) / 2;
+		if (code[first + m] < v)
+			lo = m;
+		else
+			hi = m;
+	}
+	return hi;
+}
+
+/* Cut code[first, first+n) at octree boundaries into clusters of at most
+ * CLUSTER_MAX triangles, appending each cluster's first index to out. */
+static void make_clusters(const uint64_t *code, uint32_t first, uint32_t n, uint32_t *out, uint32_t *nout)
+{
+	while (n > CLUSTER_MAX) {
+		int bit;
+		uint32_t mid = curve_split(code, first, n, &bit);
+		make_clusters(code, first, mid, out, nout);
+		first += mid;
+		n -= mid;
+	}
+	out[(*nout)++] = first;
+}
+
+/* ---- a cluster's subtree ---- */
+
+/* Component-wise minimum and maximum (plain comparisons: the vertices are
+ * finite, and unlike fmin these compile to single instructions). */
+static inline vec3 vmin(vec3 a, vec3 b) { return v3(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z); }
+static inline vec3 vmax(vec3 a, vec3 b) { return v3(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z); }
+
+static void leaf_box(const struct build *b, struct mesh_node *nd, uint32_t first, uint32_t n)
+{
+	const struct idx3 *t = &b->tri[first];
+	vec3 lo = b->verts[t->i[0]], hi = lo;
+	for (uint32_t i = 0; i < n; i++, t++)
+		for (int k = 0; k < 3; k++) {
+			vec3 p = b->verts[t->i[k]];
+			lo = vmin(lo, p);
+			hi = vmax(hi, p);
+		}
+	nd->box[0][0] = lo.x;
+	nd->box[0][1] = lo.y;
+	nd->box[0][2] = lo.z;
+	nd->box[1][0] = hi.x;
+	nd->box[1][1] = hi.y;
+	nd->box[1][2] = hi.z;
+}
+
+/* Fill *nd over triangles [first, first+n), split at the curve's octree
+ * boundaries down to leaves of LEAF_MIN; children go at *next and on. */
+static void build_cluster(const struct build *b, struct mesh_node *nd, uint32_t first, uint32_t n, uint32_t *next)
+{
+	if (n <= LEAF_MIN) {
+		nd->first = first;
+		nd->count = (uint16_t)n;
+		nd->axis = 0;
+		leaf_box(b, nd, first, n);
 		return;
-	struct idx3 *out = malloc((size_t)n * sizeof *out);
-	if (!out) abort();
-	for (uint32_t i = 0; i < n; i++)
-		out[i] = (*arr)[ref[i].id];
-	free(*arr);
-	*arr = out;
+	}
+	int bit;
+	uint32_t mid = curve_split(b->code, first, n, &bit);
+	uint32_t l = *next;
+	*next += 2;
+	nd->first = l;
+	nd->count = 0;
+	nd->axis = (uint16_t)(bit < 0 ? 0 : bit % 3);
+	build_cluster(b, &b->nodes[l], first, mid, next);
+	build_cluster(b, &b->nodes[l + 1], first + mid, n - mid, next);
+	node_join(nd, &b->nodes[l], &b->nodes[l + 1]);
+}
+
+/* How many leaves build_cluster makes over [first, first+n). */
+static uint32_t cluster_leaves(const uint64_t *code, uint32_t first, uint32_t n)
+{
+	if (n <= LEAF_MIN)
+		return 1;
+	int bit;
+	uint32_t mid = curve_split(code, first, n, &bit);
+	return cluster_leaves(code, first, mid) + cluster_leaves(code, first + mid, n - mid);
+}
+
+/* Clusters [k0, k1): with `count`, the number of nodes each one's subtree
+ * needs below its root, into cnode[k]; otherwise the subtrees, below their
+ * roots (kept in croot), each in the node range from cnode[k] on. */
+struct cluster_job {
+	const struct build *b;
+	struct mesh_node *croot;
+	uint32_t *cnode;
+	uint32_t k0, k1;
+	bool count;
+};
+
+static void *cluster_job_main(void *arg)
+{
+	struct cluster_job *j = arg;
+	const struct build *b = j->b;
+	for (uint32_t k = j->k0; k < j->k1; k++) {
+		uint32_t first = b->cfirst[k], n = b->cfirst[k + 1] - first;
+		if (j->count)
+			j->cnode[k] = 2 * (cluster_leaves(b->code, first, n) - 1);
+		else {
+			uint32_t next = j->cnode[k];
+			build_cluster(b, &j->croot[k], first, n, &next);
+		}
+	}
+	return NULL;
+}
+
+/* Run both jobs, the second on another thread when `par`. */
+static void run_pair(struct cluster_job jobs[2], bool par)
+{
+	pthread_t th;
+	bool threaded = par && pthread_create(&th, NULL, cluster_job_main, &jobs[1]) == 0;
+	cluster_job_main(&jobs[0]);
+	if (threaded)
+		pthread_join(th, NULL);
+	else
+		cluster_job_main(&jobs[1]);
+}
+
+/* ---- the upper tree over clusters ---- */
+
+static void build_top(const struct build *b, uint32_t ni, uint32_t first, uint32_t n, uint32_t next, int depth,
+                      const struct fbox *cb);
+
+struct top_job {
+	const struct build *b;
+	uint32_t ni, first, n, next;
+	int depth;
+	struct fbox cb;
+};
+
+static void *top_job_main(void *arg)
+{
+	struct top_job *j = arg;
+	build_top(j->b, j->ni, j->first, j->n, j->next, j->depth, &j->cb);
+	return NULL;
+}
+
+/* Node ni over clusters cref[first, first+n), whose doubled centroids lie
+ * in *cb; its descendants take the 2n - 2 nodes from `next`. One pass bins
+ * the clusters along the axis where their centroids spread most (each
+ * bin keeping its box, its centroid box and its triangle count); the
+ * cheapest boundary by the surface area heuristic is taken, a second pass
+ * partitions, and the children's centroid boxes come from their bins. A
+ * single cluster is its subtree's root. */
+static void build_top(const struct build *b, uint32_t ni, uint32_t first, uint32_t n, uint32_t next, int depth,
+                      const struct fbox *cb)
+{
+	struct mesh_node *nd = &b->nodes[ni];
+	struct cref *r = b->cref + first;
+	if (n == 1) {
+		*nd = b->croot[cref_id(r)];
+		return;
+	}
+	int axis = 0;
+	for (int a = 1; a < 3; a++)
+		if (cb->hi[a] - cb->lo[a] > cb->hi[axis] - cb->lo[axis])
+			axis = a;
+	float clo = cb->lo[axis], ext = cb->hi[axis] - clo;
+	int nb = n < BINS ? (int)n : BINS;
+	float scale = ext > 0 ? (float)nb / ext : 0;
+	if (!isfinite(scale))
+		scale = 0; /* centroids a few denormals apart: no bins */
+
+	int split = 0;
+	struct bin bins[BINS];
+	if (scale > 0 && depth < DEPTH_MAX) {
+		for (int k = 0; k < nb; k++) {
+			fbox_empty(&bins[k].box);
+			fbox_empty(&bins[k].cent);
+			bins[k].n = 0;
+		}
+		for (uint32_t i = 0; i < n; i++) {
+			struct bin *bn = &bins[bin_of(&r[i], axis, clo, scale, nb)];
+			f4 lo = f4_load(r[i].f), hi = f4_load(r[i].f + 4), c = f4_add(f4_xyz(lo), f4_xyz(hi));
+			f4_store(bn->box.lo, f4_min(f4_load(bn->box.lo), lo));
+			f4_store(bn->box.hi, f4_max(f4_load(bn->box.hi), hi));
+			f4_store(bn->cent.lo, f4_min(f4_load(bn->cent.lo), c));
+			f4_store(bn->cent.hi, f4_max(f4_load(bn->cent.hi), c));
+			bn->n += (uint32_t)r[i].f[7];
+		}
+		/* Right-hand sides of each boundary, then a sweep from the left. */
+		float rarea[BINS];
+		uint32_t rn[BINS];
+		struct fbox acc;
+		fbox_empty(&acc);
+		uint32_t cnt = 0;
+		for (int k = nb - 1; k >= 0; k--) {
+			fbox_join(&acc, &bins[k].box);
+			cnt += bins[k].n;
+			rarea[k] = cnt ? half_area(&acc) : 0;
+			rn[k] = cnt;
+		}
+		fbox_empty(&acc);
+		cnt = 0;
+		float best = INFINITY;
+		for (int k = 0; k < nb - 1; k++) {
+			fbox_join(&acc, &bins[k].box);
+			cnt += bins[k].n;
+			if (cnt == 0 || rn[k + 1] == 0)
+				continue;
+			float cost = half_area(&acc) * (float)cnt + rarea[k + 1] * (float)rn[k + 1];
+			if (cost < best) {
+				best = cost;
+				split = k + 1;
+			}
+		}
+	}
+	struct fbox lc, rc;
+	uint32_t mid = 0;
+	if (split > 0) {
+		/* Hoare's partition: swap only pairs that are both misplaced. */
+		uint32_t i = 0, j = n;
+		float fs = (float)split;
+		for (;;) {
+			while (i < j && bin_pos(&r[i], axis, clo, scale) < fs)
+				i++;
+			while (i < j && !(bin_pos(&r[j - 1], axis, clo, scale) < fs))
+				j--;
+			if (i >= j)
+				break;
+			struct cref t = r[i];
+			r[i++] = r[--j];
+			r[j] = t;
+		}
+		mid = i;
+		fbox_empty(&lc);
+		fbox_empty(&rc);
+		for (int k = 0; k < nb; k++)
+			fbox_join(k < split ? &lc : &rc, &bins[k].cent);
+	}
+	if (mid == 0 || mid == n) {
+		/* All centroids equal, or too deep: halve the list. */
+		mid = n / 2;
+		cent_scan(&lc, r, mid);
+		cent_scan(&rc, r + mid, n - mid);
+	}
+	uint32_t l = next, lnext = next + 2, rnext = lnext + 2 * mid - 2;
+	nd->first = l;
+	nd->count = 0;
+	nd->axis = (uint16_t)axis;
+	/* Large halves near the top: the left one on a thread of its own. */
+	pthread_t th;
+	bool threaded = false;
+	struct top_job job = {b, l, first, mid, lnext, depth + 1, lc};
+	if (n >= PAR_MIN && depth < PAR_DEPTH)
+		threaded = pthread_create(&th, NULL, top_job_main, &job) == 0;
+	if (!threaded)
+		top_job_main(&job);
+	build_top(b, l + 1, first + mid, n - mid, rnext, depth + 1, &rc);
+	if (threaded)
+		pthread_join(th, NULL);
+	node_join(&b->nodes[ni], &b->nodes[l], &b->nodes[l + 1]);
+}
+
+/* The curve sort, in passes over the triangles that run on two threads
+ * when there are many (run2): first half here, second half on the other. */
+enum { DIGIT = 11, RADIX = 1 << DIGIT };
+
+struct sorter {
+	const struct mesh_data *d;
+	uint32_t n;
+	bool par;
+	double lo[2][3], hi[2][3]; /* doubled centroids' bounds of each half */
+	double clo[3], q, cells;   /* the grid */
+	int idbits;
+	uint64_t *src, *dst;       /* keys, and room for the next radix pass */
+	int shift;                 /* the digit of this pass */
+	uint32_t hist[2][RADIX];   /* its counts in each half, then where each half's keys go */
+	struct idx3 *const *from[4]; /* per-face arrays to reorder (NULL: none) */
+	struct idx3 *to[4];
+};
+
+static void run2(void (*fn)(struct sorter *, int, uint32_t, uint32_t), struct sorter *s);
+
+struct run2_arg {
+	void (*fn)(struct sorter *, int, uint32_t, uint32_t);
+	struct sorter *s;
+};
+
+static void *run2_main(void *p)
+{
+	struct run2_arg *a = p;
+	a->fn(a->s, 1, a->s->n / 2, a->s->n);
+	return NULL;
+}
+
+static void run2(void (*fn)(struct sorter *, int, uint32_t, uint32_t), struct sorter *s)
+{
+	struct run2_arg a = {fn, s};
+	pthread_t th;
+	bool threaded = s->par && pthread_create(&th, NULL, run2_main, &a) == 0;
+	fn(s, 0, 0, s->n / 2);
+	if (threaded)
+		pthread_join(th, NULL);
+	else
+		run2_main(&a);
+}
+
+/* A triangle's doubled centroid (of its box). */
+static vec3 tri_centroid2(const struct mesh_data *d, uint32_t i)
+{
+	const struct idx3 *t = &d->tri[i];
+	vec3 p = d->verts[t->i[0]], q = d->verts[t->i[1]], r = d->verts[t->i[2]];
+	return v3_add(vmin(p, vmin(q, r)), vmax(p, vmax(q, r)));
+}
+
+static void sort_bounds(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+	for (uint32_t i = i0; i < i1; i++) {
+		vec3 c = tri_centroid2(s->d, i);
+		lo = vmin(lo, c);
+		hi = vmax(hi, c);
+	}
+	double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+	memcpy(s->lo[part], l, sizeof l);
+	memcpy(s->hi[part], h, sizeof h);
+}
+
+static void sort_keys(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	(void)part;
+	for (uint32_t i = i0; i < i1; i++) {
+		vec3 c = tri_centroid2(s->d, i);
+		double cc[3] = {c.x, c.y, c.z};
+		uint64_t g[3];
+		for (int a = 0; a < 3; a++) {
+			double x = (cc[a] - s->clo[a]) * s->q;
+			g[a] = x > 0 ? x < s->cells ? (uint64_t)x : (uint64_t)s->cells : 0; /* NaN: 0 */
+		}
+		uint64_t m = spread3(g[0]) | spread3(g[1]) << 1 | spread3(g[2]) << 2;
+		s->src[i] = m << s->idbits | i;
+	}
+}
+
+static void sort_count(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	uint32_t *h = s->hist[part];
+	memset(h, 0, sizeof s->hist[part]);
+	for (uint32_t i = i0; i < i1; i++)
+		h[(s->src[i] >> s->shift) & (RADIX - 1)]++;
+}
+
+static void sort_scatter(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	uint32_t *h = s->hist[part];
+	for (uint32_t i = i0; i < i1; i++)
+		s->dst[h[(s->src[i] >> s->shift) & (RADIX - 1)]++] = s->src[i];
+}
+
+static void sort_permute(struct sorter *s, int part, uint32_t i0, uint32_t i1)
+{
+	(void)part;
+	uint64_t mask = ((uint64_t)1 << s->idbits) - 1;
+	for (int a = 0; a < 4; a++)
+		if (*s->from[a])
+			for (uint32_t i = i0; i < i1; i++)
+				s->to[a][i] = (*s->from[a])[s->src[i] & mask];
+}
+
+/* Sort d's triangles along the curve: reorder its per-face arrays and
+ * return the sorted keys (n of them; the caller frees them). Each key is
+ * a Morton code above the triangle's index: the index takes the low bits
+ * it needs (*idbits), the code up to 21 bits per axis of the rest, on a
+ * grid of cubic cells (so that a flat mesh is not cut into slivers).
+ * Equal codes are ordered, and later split, by index. The sort is least
+ * significant digit first, 11 bits at a time, skipping digits every key
+ * shares; each pass counts then scatters both halves, the second half's
+ * keys of each digit going after the first's, so the sort stays stable. */
+static uint64_t *curve_sort(struct mesh_data *d, int *idbits)
+{
+	uint32_t n = d->ntris;
+	struct sorter *s = calloc(1, sizeof *s);
+	if (!s) abort();
+	s->d = d;
+	s->n = n;
+	s->par = n >= PAR_MIN;
+	run2(sort_bounds, s);
+	double ext = 0;
+	for (int a = 0; a < 3; a++) {
+		s->clo[a] = fmin(s->lo[0][a], s->lo[1][a]);
+		ext = fmax(ext, fmax(s->hi[0][a], s->hi[1][a]) - s->clo[a]);
+	}
+	s->idbits = 1;
+	while (s->idbits < 32 && ((uint64_t)1 << s->idbits) < n)
+		s->idbits++;
+	int axbits = (64 - s->idbits) / 3 < 21 ? (64 - s->idbits) / 3 : 21;
+	s->cells = (double)(((uint64_t)1 << axbits) - 1);
+	s->q = ext > 0 && isfinite(ext) ? s->cells / ext : 0;
+	s->src = malloc((size_t)n * sizeof *s->src);
+	s->dst = malloc((size_t)n * sizeof *s->dst);
+	if (!s->src || !s->dst) abort();
+	run2(sort_keys, s);
+	for (s->shift = s->idbits; s->shift < 64; s->shift += DIGIT) {
+		run2(sort_count, s);
+		uint32_t first = (uint32_t)(s->src[0] >> s->shift) & (RADIX - 1);
+		if (s->hist[0][first] + s->hist[1][first] == n)
+			continue; /* one digit for all: the order stays */
+		uint32_t sum = 0;
+		for (int k = 0; k < RADIX; k++) {
+			uint32_t c0 = s->hist[0][k], c1 = s->hist[1][k];
+			s->hist[0][k] = sum;
+			s->hist[1][k] = sum + c0;
+			sum += c0 + c1;
+		}
+		run2(sort_scatter, s);
+		uint64_t *t = s->src;
+		s->src = s->dst;
+		s->dst = t;
+	}
+	free(s->dst);
+	struct idx3 **arrs[4] = {&d->tri, &d->tri_n, &d->tri_uv, &d->tri_tex};
+	for (int a = 0; a < 4; a++) {
+		s->from[a] = arrs[a];
+		s->to[a] = NULL;
+		if (*arrs[a]) {
+			s->to[a] = malloc((size_t)n * sizeof *s->to[a]);
+			if (!s->to[a]) abort();
+		}
+	}
+	run2(sort_permute, s);
+	for (int a = 0; a < 4; a++)
+		if (*arrs[a]) {
+			free(*arrs[a]);
+			*arrs[a] = s->to[a];
+		}
+	uint64_t *code = s->src;
+	*idbits = s->idbits;
+	free(s);
+	return code;
 }
 
 static void build_hierarchy(struct mesh_data *d)
 {
 	uint32_t n = d->ntris;
-	struct build b = {.verts = d->verts, .tri = d->tri};
-	b.ref = malloc((size_t)n * sizeof *b.ref);
-	b.nodes = malloc((size_t)(2 * (uint64_t)n - 1) * sizeof *b.nodes);
-	if (!b.ref || !b.nodes) abort();
-	for (uint32_t i = 0; i < n; i++) {
-		struct bref *r = &b.ref[i];
-		for (int a = 0; a < 3; a++) {
-			r->lo[a] = FLT_MAX;
-			r->hi[a] = -FLT_MAX;
-		}
-		for (int k = 0; k < 3; k++) {
-			vec3 p = d->verts[d->tri[i].i[k]];
-			float c[3] = {to_float(p.x), to_float(p.y), to_float(p.z)};
-			for (int a = 0; a < 3; a++) {
-				r->lo[a] = c[a] < r->lo[a] ? c[a] : r->lo[a];
-				r->hi[a] = c[a] > r->hi[a] ? c[a] : r->hi[a];
-			}
-		}
-		r->id = i;
+	int idbits;
+	uint64_t *code = curve_sort(d, &idbits);
+
+	uint32_t *cfirst = malloc(((size_t)n + 1) * sizeof *cfirst);
+	if (!cfirst) abort();
+	uint32_t k = 0;
+	make_clusters(code, 0, n, cfirst, &k);
+	cfirst[k] = n;
+	struct mesh_node *croot = malloc((size_t)k * sizeof *croot);
+	struct cref *cref = malloc((size_t)k * sizeof *cref);
+	uint32_t *cnode = malloc(((size_t)k + 1) * sizeof *cnode);
+	if (!croot || !cref || !cnode) abort();
+	struct build b = {.verts = d->verts, .tri = d->tri, .code = code, .cfirst = cfirst, .croot = croot,
+	                  .cref = cref};
+
+	/* The clusters' subtrees go below the upper tree's 2k - 1 nodes, each
+	 * in a range of the size it needs, counted first; with many
+	 * triangles, the second half of the clusters on another thread. */
+	bool par = n >= PAR_MIN;
+	struct cluster_job jobs[2] = {{&b, croot, cnode, 0, k / 2, true}, {&b, croot, cnode, k / 2, k, true}};
+	run_pair(jobs, par);
+	uint64_t total = 2 * (uint64_t)k - 1;
+	for (uint32_t i = 0; i < k; i++) {
+		uint32_t c = cnode[i];
+		cnode[i] = (uint32_t)total;
+		total += c;
 	}
-	struct cbox cb;
-	cbox_empty(&cb);
-	for (uint32_t i = 0; i < n; i++)
-		cbox_add(&cb, &b.ref[i]);
-	b.nnodes = 1;
-	build_node(&b, 0, 0, n, 0, &cb);
-	permute(&d->tri, b.ref, n);
-	permute(&d->tri_n, b.ref, n);
-	permute(&d->tri_uv, b.ref, n);
-	permute(&d->tri_tex, b.ref, n);
-	free(b.ref);
-	struct mesh_node *nodes = realloc(b.nodes, (size_t)b.nnodes * sizeof *nodes);
-	d->nodes = nodes ? nodes : b.nodes;
-	d->nnodes = b.nnodes;
+	b.nodes = malloc((size_t)total * sizeof *b.nodes);
+	if (!b.nodes) abort();
+	jobs[0].count = jobs[1].count = false;
+	run_pair(jobs, par);
+	free(cnode);
+
+	for (uint32_t i = 0; i < k; i++) {
+		float *f = cref[i].f;
+		for (int a = 0; a < 3; a++) {
+			f[a] = to_float(croot[i].box[0][a]);
+			f[4 + a] = to_float(croot[i].box[1][a]);
+		}
+		memcpy(&f[3], &i, sizeof i);
+		f[7] = (float)(cfirst[i + 1] - cfirst[i]);
+	}
+	struct fbox cb;
+	cent_scan(&cb, cref, k);
+	build_top(&b, 0, 0, k, 1, 0, &cb);
+	free(cref);
+	free(croot);
+	free(cfirst);
+	free(code);
+	d->nodes = b.nodes;
+	d->nnodes = (uint32_t)total;
 }
 
 static struct idx3 *copy_idx(const struct idx3 *a, uint32_t n)
@@ -652,11 +1011,19 @@ static struct mesh_data *data_new(struct mesh_builder *b)
 			d->tri_uv = copy_idx(d->tri, n);
 	}
 
+	/* POV-Ray's mesh2 extents include the corners of the degenerate faces
+	 * it drops (measured with max_extent: a face <3,4,4> reaches vertex
+	 * 4); its mesh extents do not. */
+	struct aabb dropped = aabb_empty();
 	uint32_t kept = 0;
 	for (uint32_t i = 0; i < n; i++) {
 		const struct idx3 *f = &d->tri[i];
-		if (tri_degenerate(d->verts[f->i[0]], d->verts[f->i[1]], d->verts[f->i[2]]))
+		if (tri_degenerate(d->verts[f->i[0]], d->verts[f->i[1]], d->verts[f->i[2]])) {
+			if (kind == MESH_KIND_MESH2)
+				for (int k = 0; k < 3; k++)
+					dropped = aabb_add_point(dropped, d->verts[f->i[k]]);
 			continue;
+		}
 		d->tri[kept] = d->tri[i];
 		if (d->tri_n) d->tri_n[kept] = d->tri_n[i];
 		if (d->tri_uv) d->tri_uv[kept] = d->tri_uv[i];
@@ -669,13 +1036,16 @@ static struct mesh_data *data_new(struct mesh_builder *b)
 	d->tri_uv = resize(d->tri_uv, kept, sizeof *d->tri_uv);
 	d->tri_tex = resize(d->tri_tex, kept, sizeof *d->tri_tex);
 
-	d->box = (struct aabb){{0, 0, 0}, {0, 0, 0}};
+	d->box = dropped;
 	if (kept > 0) {
 		build_hierarchy(d);
 		const struct mesh_node *root = &d->nodes[0];
-		d->box.lo = v3(root->box[0][0], root->box[0][1], root->box[0][2]);
-		d->box.hi = v3(root->box[1][0], root->box[1][1], root->box[1][2]);
+		struct aabb tb = {v3(root->box[0][0], root->box[0][1], root->box[0][2]),
+		                  v3(root->box[1][0], root->box[1][1], root->box[1][2])};
+		d->box = aabb_union(d->box, tb);
 	}
+	if (!aabb_is_finite(d->box))
+		d->box = (struct aabb){{0, 0, 0}, {0, 0, 0}};
 	d->extent = fmax(v3_maxabs(d->box.lo), v3_maxabs(d->box.hi));
 	return d;
 }
@@ -748,7 +1118,7 @@ static inline bool box_hit(const struct mesh_node *nd, const struct walk *w, dou
 
 static void record(struct walk *w, uint32_t tri, const struct tri_hit *th)
 {
-	struct hit h = {th->t, NULL, (int)tri, th->u, th->v};
+	struct hit h = {.t = th->t, .part = (int)tri, .u = th->u, .v = th->v};
 	switch (w->mode) {
 	case WALK_CLOSEST: /* h->obj is the caller's */
 		w->out[0].t = h.t;
@@ -898,7 +1268,8 @@ static vec3 interpolate(const vec3 *list, const struct idx3 *idx, double u, doub
 	return v3_madd(r, list[idx->i[2]], v);
 }
 
-/* The flat normal (b - a) x (c - a), or for a face with normals the unit
+/* The flat normal (c - a) x (b - a) (POV-Ray's orientation, as for
+ * triangle), or for a face with normals the unit
  * vertex normals interpolated linearly (POV-Ray's smooth triangles), the
  * flat one where they cancel. */
 static vec3 mesh_normal(const struct object *o, vec3 p, const struct hit *h)
@@ -910,7 +1281,7 @@ static vec3 mesh_normal(const struct object *o, vec3 p, const struct hit *h)
 	uint32_t i = face_of(d, p, h, &u, &v);
 	const struct idx3 *f = &d->tri[i];
 	vec3 a = d->verts[f->i[0]];
-	vec3 flat = v3_cross(v3_sub(d->verts[f->i[1]], a), v3_sub(d->verts[f->i[2]], a));
+	vec3 flat = v3_cross(v3_sub(d->verts[f->i[2]], a), v3_sub(d->verts[f->i[1]], a));
 	if (d->tri_n && d->tri_n[i].i[0] != MESH_NONE) {
 		vec3 n = interpolate(d->normals, &d->tri_n[i], u, v);
 		double nn = v3_dot(n, n);

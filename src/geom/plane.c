@@ -2,6 +2,7 @@
  * is the side the normal points away from. */
 #include "geom/shapes.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 struct plane {
@@ -16,7 +17,11 @@ static bool plane_intersect(const struct object *o, const struct ray *r, double 
 	double dn = v3_dot(r->dir, p->n);
 	if (dn == 0)
 		return false; /* parallel: never crosses (lying in it counts as no hit) */
-	double t = (p->d - v3_dot(r->org, p->n)) / dn;
+	/* Multiplied by the reciprocal, as box.c's slab test does: a plane
+	 * and a box face that coincide then give the same t to the bit, and
+	 * the tie goes the same way on every ray (no speckles where a box
+	 * stands on a plane). */
+	double t = (p->d - v3_dot(r->org, p->n)) * (1.0 / dn);
 	if (!(t > tmin && t < tmax))
 		return false;
 	h->t = t;
@@ -43,9 +48,43 @@ static vec3 plane_normal(const struct object *o, vec3 q, const struct hit *h)
 	return ((const struct plane *)o)->n;
 }
 
+/* The half-space's box: infinite, except for a plane whose normal lies
+ * along an axis (the other components below 1e-10, as POV-Ray judges it:
+ * a normal <1e-10, 1, 0> is not axis-aligned, <1e-11, 1, 0> is), where the
+ * inside side of the plane is bounded on that axis. POV-Ray's min_extent
+ * still reports a lone plane as infinite, but an intersection cuts its
+ * box with it. `flip` gives the other half-space (the inverse plane). */
+static struct aabb half_space_box(const struct plane *p, bool flip)
+{
+	struct aabb b = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+	double n[3] = {p->n.x, p->n.y, p->n.z};
+	int axis = -1, small = 0;
+	for (int a = 0; a < 3; a++) {
+		if (fabs(n[a]) < 1e-10)
+			small++;
+		else
+			axis = a;
+	}
+	if (small != 2)
+		return b;
+	/* inside: n[axis] * x < d, or > d for the inverse */
+	double x = p->d / n[axis];
+	bool below = (n[axis] > 0) != flip;
+	vec3 *side = below ? &b.hi : &b.lo;
+	if (axis == 0) side->x = x;
+	else if (axis == 1) side->y = x;
+	else side->z = x;
+	return b;
+}
+
 static struct aabb plane_bounds(const struct object *o)
 {
-	return (struct aabb){{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+	return half_space_box((const struct plane *)o, false);
+}
+
+static struct aabb plane_inverse_bounds(const struct object *o)
+{
+	return half_space_box((const struct plane *)o, true);
 }
 
 static struct object *plane_copy(const struct object *o)
@@ -63,6 +102,7 @@ static const struct object_ops plane_ops = {
 	.inside = plane_inside,
 	.normal = plane_normal,
 	.bounds = plane_bounds,
+	.inverse_bounds = plane_inverse_bounds,
 	.copy = plane_copy,
 };
 

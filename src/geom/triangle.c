@@ -43,13 +43,14 @@ static bool triangle_inside(const struct object *o, vec3 p)
 	return false;
 }
 
-/* The flat normal (b - a) x (c - a); for a smooth triangle the unit vertex
+/* The flat normal (c - a) x (b - a), POV-Ray's orientation (its trace()
+ * gives +y for <-1,0,-1>, <1,0,-1>, <0,0,1>); for a smooth triangle the unit vertex
  * normals interpolated linearly with the barycentrics, as POV-Ray does,
  * falling back to the flat one where they cancel. */
 static vec3 triangle_normal(const struct object *o, vec3 p, const struct hit *h)
 {
 	const struct triangle *tr = (const struct triangle *)o;
-	vec3 flat = v3_cross(v3_sub(tr->p[1], tr->p[0]), v3_sub(tr->p[2], tr->p[0]));
+	vec3 flat = v3_cross(v3_sub(tr->p[2], tr->p[0]), v3_sub(tr->p[1], tr->p[0]));
 	if (!tr->smooth)
 		return flat;
 	double u, v;

@@ -197,9 +197,10 @@ static struct value f_trace(struct parser *p, struct srcpos at)
 	vec3 pt = v3(0, 0, 0), n = v3(0, 0, 0);
 	if (v3_len(dir) > 0 && object_intersect(o.obj, &r, 0, INFINITY, &h)) {
 		pt = v3_madd(from, dir, h.t);
-		/* The normal of the primitive hit (for CSG, the leaf). */
+		/* The leaf's outward normal, turned over once for each inverse
+		 * object above it, never toward the ray: POV-Ray's trace(). */
 		n = object_normal(h.obj ? h.obj : o.obj, pt, &h);
-		if (v3_dot(n, dir) > 0)
+		if (h.inverted)
 			n = v3_neg(n);
 	}
 	parse_drop(p, &o);

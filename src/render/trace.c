@@ -54,9 +54,10 @@ double trace_epsilon(vec3 p, vec3 from)
 
 bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, double tmax, unsigned skip, struct hit *h)
 {
-	bool found = bvh_intersect(p->bvh, r, tmin, tmax, skip, h, NULL);
-	if (found)
-		tmax = h->t;
+	/* Unbounded objects first, and a later hit must be strictly nearer:
+	 * where a plane and a bounded object's face coincide (a glass box
+	 * standing on a floor), the plane wins the tie, as in POV-Ray. */
+	bool found = false;
 	for (size_t i = 0; i < p->nunbounded; i++) {
 		const struct object *o = p->unbounded[i];
 		if (o->flags & skip)
@@ -67,6 +68,11 @@ bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, d
 			tmax = th.t;
 			found = true;
 		}
+	}
+	struct hit bh;
+	if (bvh_intersect(p->bvh, r, tmin, tmax, skip, &bh, NULL)) {
+		*h = bh;
+		found = true;
 	}
 	return found;
 }

@@ -149,10 +149,17 @@ int object_hits_from_roots(const struct object *o, const double *t, int n, struc
 static bool surface_hit(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
 {
 	h->obj = o; /* CSG replaces it with the leaf it hit */
+	h->inverted = false; /* a CSG's child sets it for the path below */
+	bool found;
 	if (!o->has_xf)
-		return o->ops->intersect(o, r, tmin, tmax, h);
-	struct ray lr = {mat_point(&o->xf.inv, r->org), mat_dir(&o->xf.inv, r->dir)};
-	return o->ops->intersect(o, &lr, tmin, tmax, h);
+		found = o->ops->intersect(o, r, tmin, tmax, h);
+	else {
+		struct ray lr = {mat_point(&o->xf.inv, r->org), mat_dir(&o->xf.inv, r->dir)};
+		found = o->ops->intersect(o, &lr, tmin, tmax, h);
+	}
+	if (found && (o->flags & OBJ_INVERSE))
+		h->inverted = !h->inverted;
+	return found;
 }
 
 bool object_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
@@ -197,26 +204,73 @@ bool object_inside(const struct object *o, vec3 p)
 	return in;
 }
 
-struct aabb object_world_bounds(const struct object *o)
+static const struct aabb inf_box = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
+
+/* The box of m applied to b, where b may be unbounded on some sides (a
+ * plane's half-space): each output axis sums the input intervals its row
+ * mixes in, skipping zero coefficients, so that a translation, a scale or
+ * a rotation by a multiple of 90 degrees keeps the finite sides finite. */
+static struct aabb box_transform(const mat4 *m, struct aabb b)
 {
-	const struct aabb inf = {{-INFINITY, -INFINITY, -INFINITY}, {INFINITY, INFINITY, INFINITY}};
-	if (o->flags & OBJ_INVERSE)
-		return inf;
-	struct aabb b = o->ops->bounds(o);
-	if (aabb_is_finite(b) && o->has_xf)
-		b = mat_bounds(&o->xf.fwd, b);
-	else if (!aabb_is_finite(b))
-		b = inf;
-	/* A clip or a bound limits the object to its own box. */
+	if (aabb_is_finite(b))
+		return mat_bounds(m, b);
+	double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z}, rl[3], rh[3];
+	for (int i = 0; i < 3; i++) {
+		rl[i] = rh[i] = m->m[i][3];
+		for (int j = 0; j < 3; j++) {
+			double c = m->m[i][j];
+			if (c == 0)
+				continue;
+			double a = c * lo[j], z = c * hi[j];
+			rl[i] += a < z ? a : z;
+			rh[i] += a < z ? z : a;
+		}
+	}
+	return (struct aabb){{rl[0], rl[1], rl[2]}, {rh[0], rh[1], rh[2]}};
+}
+
+/* A box's volume, infinite when a side is unbounded (never 0 * inf). */
+static double box_volume(struct aabb b)
+{
+	if (!aabb_is_finite(b))
+		return INFINITY;
+	vec3 d = v3_sub(b.hi, b.lo);
+	return d.x * d.y * d.z;
+}
+
+struct aabb object_world_bounds_raw(const struct object *o, bool invert)
+{
+	struct aabb b = inf_box;
+	bool inverse = ((o->flags & OBJ_INVERSE) != 0) != invert;
+	if (!inverse || o->ops->inverse_bounds) {
+		b = inverse ? o->ops->inverse_bounds(o) : o->ops->bounds(o);
+		if (o->has_xf)
+			b = box_transform(&o->xf.fwd, b);
+	}
+	/* POV-Ray keeps the smallest by volume of the object's own box and
+	 * the boxes of its clip and its bound (it does not cut one with the
+	 * other: a sphere clipped by a larger box keeps the sphere's box). */
 	const struct object *lim[2] = {o->clip, o->bound};
+	double vol = box_volume(b);
 	for (int i = 0; i < 2; i++) {
 		if (!lim[i])
 			continue;
 		struct aabb c = object_world_bounds(lim[i]);
-		b.lo = v3_max(b.lo, c.lo);
-		b.hi = v3_min(b.hi, c.hi);
+		double cv = box_volume(c);
+		if (cv < vol) {
+			b = c;
+			vol = cv;
+		}
 	}
-	if (b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
-		b.lo = b.hi = v3_min(b.lo, b.hi); /* nothing can be hit: any point will do */
+	return b;
+}
+
+struct aabb object_world_bounds(const struct object *o)
+{
+	struct aabb b = object_world_bounds_raw(o, false);
+	/* Unbounded on any axis, or empty (an intersection of disjoint
+	 * children): infinite, as POV-Ray's min_extent reports it. */
+	if (!aabb_is_finite(b) || b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
+		return inf_box;
 	return b;
 }

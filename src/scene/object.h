@@ -22,6 +22,8 @@ struct hit {
 	const struct object *obj;
 	int part;
 	double u, v; /* primitive-specific (a triangle's barycentrics) */
+	bool inverted; /* object_intersect: an odd number of inverse objects lie between
+	                * the object asked and the leaf (POV-Ray's trace() normal flips) */
 };
 
 enum object_flag {
@@ -45,8 +47,12 @@ struct object_ops {
 	bool (*inside)(const struct object *o, vec3 p);
 	/* The outward object-space normal (not necessarily unit) at p. */
 	vec3 (*normal)(const struct object *o, vec3 p, const struct hit *h);
-	/* Object-space bounds; infinite components for unbounded shapes. */
+	/* Object-space bounds; infinite components for unbounded shapes (a
+	 * plane's half-space may be infinite on one side only). */
 	struct aabb (*bounds)(const struct object *o);
+	/* Object-space bounds of the inverse solid (a plane: the other
+	 * half-space); NULL: an inverse object is unbounded. */
+	struct aabb (*inverse_bounds)(const struct object *o);
 	/* POV-Ray's uv coordinates of the object-space point p for hit h;
 	 * NULL for primitives that have none. */
 	bool (*uv)(const struct object *o, vec3 p, const struct hit *h, double uv[2]);
@@ -121,7 +127,15 @@ bool object_intersect(const struct object *o, const struct ray *r, double tmin, 
 vec3 object_normal(const struct object *o, vec3 p, const struct hit *h);
 /* World-space inside test (honours OBJ_INVERSE). */
 bool object_inside(const struct object *o, vec3 p);
-/* World-space bounds from the object-space ones and the transform. */
+/* World-space bounds, as POV-Ray's min_extent/max_extent give them: the
+ * object-space box transformed, or the box of the clip or the bound when
+ * that is smaller by volume; a box unbounded on any axis (or empty)
+ * becomes the infinite box. */
 struct aabb object_world_bounds(const struct object *o);
+/* The same before that last step: an axis-aligned plane keeps its
+ * half-space, so that a CSG intersection can cut its box with it. With
+ * invert, the bounds of the inverse object (a difference's subtracted
+ * children). */
+struct aabb object_world_bounds_raw(const struct object *o, bool invert);
 
 #endif

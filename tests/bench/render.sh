@@ -9,7 +9,8 @@
 # below; POV-Ray's Bounding Time), render time (POV-Ray's Trace Time),
 # peak memory (GNU time's maximum resident set) and camera rays per second
 # of render time. Ratios are POV-Ray's over lucent's. Asserts nothing; run
-# by `make bench`.
+# by `make bench`. BENCH_SCENES (names without .pov) picks the scenes, e.g.
+#   BENCH_SCENES=bench-mesh2 sh tests/bench/render.sh
 : "${top_srcdir:=$(cd "$(dirname "$0")/../.." && pwd)}"
 : "${LUCENT:=$top_srcdir/lucent}"
 W=${BENCH_W:-800}
@@ -30,7 +31,7 @@ mrays() { awk -v n="$1" -v t="$2" 'BEGIN { if (t > 0) printf "%.2f", n / t / 1e6
 
 printf 'image %dx%d, %s render threads\n' "$W" "$H" "all"
 printf '%-14s %-8s %9s %9s %9s %9s %10s\n' scene program parse build render peak_MB "Mrays/s"
-for scene in bench-spheres bench-mesh2; do
+for scene in ${BENCH_SCENES:-bench-spheres bench-mesh2}; do
 	"$TIME" -f 'peak %M' "$LUCENT" +W"$W" +H"$H" "$scene.pov" +O"$out/$scene-lucent.png" \
 		> "$out/l.log" 2>&1
 	lp=$(field parse "$out/l.log"); lb=$(field prepare "$out/l.log"); lr=$(field render "$out/l.log")

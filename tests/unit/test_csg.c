@@ -165,9 +165,16 @@ static void test_clip_and_bound(void **state)
 	assert_int_equal(crossings(s, v3(0.5, -5, 0), v3(0, 0, 1), t, 4), 0);
 	assert_false(object_inside(s, v3(0, -0.5, 0)));
 	assert_true(object_inside(s, v3(0, 0.5, 0)));
+	/* POV-Ray keeps the smaller box by volume, the sphere's 8 against
+	 * the clip's 16; it does not cut one with the other. */
 	struct aabb b = object_world_bounds(s);
-	assert_vec_near(b.lo, -1, 0, -1, 0);
+	assert_vec_near(b.lo, -1, -1, -1, 0);
 	assert_vec_near(b.hi, 1, 1, 1, 0);
+	/* A bound smaller by volume (7.2) wins even where it is wider. */
+	s->bound = box_new(v3(-0.1, -3, -3), v3(0.1, 3, 3), nopos);
+	b = object_world_bounds(s);
+	assert_vec_near(b.lo, -0.1, -3, -3, 0);
+	assert_vec_near(b.hi, 0.1, 3, 3, 0);
 	/* Transforms move the clip with the object. */
 	struct xform tr = xform_translate(v3(0, 0, 3));
 	object_transform(s, &tr);
@@ -195,6 +202,49 @@ static void test_inverse(void **state)
 	assert_int_equal(crossings(c, v3(-5, 0, 0), v3(1, 0, 0), t, 4), 2);
 	assert_near(t[1], 5.5, 1e-12);
 	object_free(c);
+}
+
+/* Extents measured with POV-Ray's min_extent/max_extent: axis-aligned
+ * planes cut an intersection's box (also inverted, in a difference, and
+ * moved by a translation or a 90-degree rotation); a box left unbounded on
+ * any axis, or empty, is infinite. */
+static void test_plane_extents(void **state)
+{
+	(void)state;
+	struct object *cube = csg_new(CSG_INTERSECTION, nopos);
+	for (int a = 0; a < 3; a++)
+		for (int s = -1; s <= 1; s += 2)
+			csg_add(cube, plane_new(v3(a == 0 ? s : 0, a == 1 ? s : 0, a == 2 ? s : 0), 1, nopos));
+	struct xform sc = xform_scale(v3(2, 2, 2)), tr = xform_translate(v3(1, 1, 1));
+	object_transform(cube, &sc);
+	object_transform(cube, &tr);
+	struct aabb b = object_world_bounds(cube);
+	assert_vec_near(b.lo, -1, -1, -1, 0);
+	assert_vec_near(b.hi, 3, 3, 3, 0);
+	object_free(cube);
+
+	struct object *slab = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(slab, plane_new(v3(0, 1, 0), 1, nopos));
+	csg_add(slab, plane_new(v3(0, -1, 0), 1, nopos));
+	assert_false(aabb_is_finite(object_world_bounds(slab)));
+	object_free(slab);
+
+	struct object *d = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(d, box_new(v3(-1, -1, -1), v3(1, 1, 1), nopos));
+	struct object *p = plane_new(v3(0, 1, 0), 0.5, nopos);
+	struct xform rz = xform_rotate(v3(0, 0, 90));
+	object_transform(p, &rz); /* the plane x > -0.5; subtracted: x < -0.5 */
+	csg_add(d, p);
+	b = object_world_bounds(d);
+	assert_vec_near(b.lo, -1, -1, -1, 0);
+	assert_vec_near(b.hi, -0.5, 1, 1, 1e-15);
+	object_free(d);
+
+	struct object *e = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(e, sphere_new(v3(0, 0, 0), 1, nopos));
+	csg_add(e, plane_new(v3(0, 1, 0), -5, nopos));
+	assert_false(aabb_is_finite(object_world_bounds(e)));
+	object_free(e);
 }
 
 /* A difference of a box and many small spheres: after object_prepare (a
@@ -243,6 +293,7 @@ int main(void)
 		cmocka_unit_test(test_transform_and_copy),
 		cmocka_unit_test(test_clip_and_bound),
 		cmocka_unit_test(test_inverse),
+		cmocka_unit_test(test_plane_extents),
 		cmocka_unit_test(test_prepared_matches_scan),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -43,7 +43,7 @@ static bool hits(const struct object *o, vec3 org, vec3 dir, double tmin, double
 
 static struct hit must_hit(const struct object *o, vec3 org, vec3 dir, double tmin)
 {
-	struct hit h = {-1, NULL, -1, 0, 0};
+	struct hit h = {.t = -1, .part = -1};
 	if (!hits(o, org, dir, tmin, INFINITY, &h))
 		fail_msg("ray <%.17g,%.17g,%.17g> + t<%.17g,%.17g,%.17g> missed the %s", org.x, org.y, org.z,
 		         dir.x, dir.y, dir.z, o->ops->name);
@@ -154,8 +154,9 @@ static void test_triangle_hit_miss(void **state)
 	assert_int_equal(h.part, 0);
 	assert_near(h.u, 0.25, 0);
 	assert_near(h.v, 0.25, 0);
-	/* The flat normal (b-a)x(c-a), whichever side the ray comes from. */
-	assert_vec_near(object_normal(t, v3(0.5, 0.5, 0), &h), 0, 0, 1, 0);
+	/* The flat normal (c-a)x(b-a), POV-Ray's orientation (its trace()
+	 * gives -z for this triangle), whichever side the ray comes from. */
+	assert_vec_near(object_normal(t, v3(0.5, 0.5, 0), &h), 0, 0, -1, 0);
 	h = must_hit(t, v3(0.5, 0.5, 3), v3(0, 0, -2), 0);
 	assert_near(h.t, 1.5, 0);
 	/* Misses: outside the hypotenuse, behind, beyond tmax, parallel. */
@@ -204,7 +205,7 @@ static void test_triangle_transformed(void **state)
 	assert_near(h.t, 5, 1e-15);
 	assert_near(h.u, 0.25, 1e-15);
 	assert_near(h.v, 0.25, 1e-15);
-	assert_vec_near(object_normal(t, v3(0.5, 1, 5), &h), 0, 0, 1, 1e-15);
+	assert_vec_near(object_normal(t, v3(0.5, 1, 5), &h), 0, 0, -1, 1e-15);
 	assert_false(hits(t, v3(1.5, 1.5, 0), v3(0, 0, 1), 0, INFINITY, NULL));
 	struct aabb b = object_world_bounds(t);
 	assert_vec_near(b.lo, 0, 0, 5, 1e-15);
@@ -956,6 +957,64 @@ static void test_mesh_empty_and_transformed(void **state)
 
 /* A 1M-triangle height-field grid: its build time is printed (not
  * asserted), its memory must stay well under 245 MB. */
+/* Large enough for every part of the build to run on two threads (the
+ * sort, the clusters, the upper levels), with scales that differ by 10^4
+ * (a huge triangle among small ones, a far cluster) and 3000 copies of
+ * one triangle (equal Morton codes): the closest hit still agrees with
+ * brute force. */
+static void test_mesh_threaded_matches_brute_force(void **state)
+{
+	(void)state;
+	size_t nsoup = 90000, ncopy = 3000, nf = nsoup + ncopy + 1, nv = 3 * nf;
+	vec3 *v = malloc(nv * sizeof *v);
+	uint32_t (*f)[3] = malloc(nf * sizeof *f);
+	for (size_t i = 0; i < nf; i++) {
+		vec3 c = v3(4 * urand((uint32_t)i, 31) - 2, 4 * urand((uint32_t)i, 32) - 2, 4 * urand((uint32_t)i, 33) - 2);
+		double size = 0.01 + 0.05 * urand((uint32_t)i, 34);
+		if (i >= nsoup && i < nsoup + ncopy) { /* the stack of copies */
+			c = v3(0.5, 0.5, 0.5);
+			size = 0.2;
+		} else if (i == nf - 1) { /* one huge triangle */
+			c = v3(0, 0, 0);
+			size = 100;
+		} else if (i % 1000 == 0) /* a far, sparse cluster */
+			c = v3_add(c, v3(300, 0, 0));
+		for (int k = 0; k < 3; k++) {
+			uint32_t seed = i >= nsoup && i < nsoup + ncopy ? (uint32_t)(3 * nsoup + k) : (uint32_t)(3 * i + k);
+			v[3 * i + k] = v3_madd(c, rand_unit(seed, 40), size);
+			f[i][k] = (uint32_t)(3 * i + k);
+		}
+	}
+	struct object *m = mesh_from(v, nv, f, nf, v3(0, 0, 0));
+	struct mesh_stats st;
+	mesh_get_stats(m, &st);
+	assert_int_equal(st.triangles, nf);
+	assert_true(st.nodes < 2 * nf);
+	int nhit = 0;
+	for (uint32_t i = 0; i < 600; i++) {
+		vec3 org = v3(8 * urand(i, 50) - 4, 8 * urand(i, 51) - 4, 8 * urand(i, 52) - 4);
+		vec3 dir = rand_unit(i, 53);
+		if (i % 3 == 0) /* through the stack of copies */
+			dir = v3_sub(v3(0.5, 0.5, 0.5), org);
+		struct ray r = mkray(org, dir);
+		struct hit h;
+		struct tri_hit bh;
+		size_t bp = 0;
+		bool a = m->ops->intersect(m, &r, 0, INFINITY, &h);
+		bool b = brute_closest(m, &r, 0, INFINITY, &bh, &bp);
+		if (a != b)
+			fail_msg("ray %u: mesh %d, brute force %d", i, a, b);
+		if (a && h.t != bh.t)
+			fail_msg("ray %u: mesh t %.17g, brute force %.17g", i, h.t, bh.t);
+		nhit += a;
+	}
+	print_message("%d of 600 rays hit\n", nhit);
+	assert_true(nhit > 200);
+	object_free(m);
+	free(v);
+	free(f);
+}
+
 static void test_mesh_million(void **state)
 {
 	(void)state;
@@ -1007,6 +1066,7 @@ int main(void)
 		cmocka_unit_test(test_mesh_uv_normals_textures),
 		cmocka_unit_test(test_mesh2_default_indices),
 		cmocka_unit_test(test_mesh_empty_and_transformed),
+		cmocka_unit_test(test_mesh_threaded_matches_brute_force),
 		cmocka_unit_test(test_mesh_million),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
