@@ -5,7 +5,11 @@
 // Ring_Sphere (POV-Ray's vertical rings are not all full circles; lucent
 // draws full tori) and the extents of the other shapes, whose bounding
 // boxes in POV-Ray come from how its macros build them (rotated boxes),
-// not from the shapes (doc/stdlib.md).
+// not from the shapes (doc/stdlib.md). Egg_Shape, Egg and the two
+// Half_Hollowed_Rounded_Cylinders are left out too: lucent bounds their
+// plane-cut halves by the plane, as POV-Ray does for an intersection with
+// an axis plane, so their boxes are the shapes' own (y from 0 for the egg),
+// where POV-Ray's macros build them in a way whose boxes are larger.
 #version 3.7;
 #include "shapes3.inc"
 // Rnd(V): V rounded to 4 decimals (no -0).
@@ -60,8 +64,8 @@ Probe("Pyramid_N_AB", object { Pyramid_N_AB(7, <0,0,0>, 1, <0.5,2,1>, 0.3) }, 0,
 Probe("Facetted_Sphere", object { Facetted_Sphere(3, 8) }, 0, 5, 1)
 Probe("Facetted_Egg_Shape", object { Facetted_Egg_Shape(3, 8, 1.2, 1.6) }, 0, 5, 1)
 Probe("Facetted_Egg", object { Facetted_Egg(4, 10) }, <0, 1, 0>, 5, 0)
-Probe("Egg_Shape", object { Egg_Shape(1.2, 1.6) }, <0, 1, 0>, 5, 1)
-Probe("Egg", object { Egg }, <0, 1, 0>, 5, 1)
+Probe("Egg_Shape", object { Egg_Shape(1.2, 1.6) }, <0, 1, 0>, 5, 0)
+Probe("Egg", object { Egg }, <0, 1, 0>, 5, 0)
 Probe("Round_Pyramid_N_out", object { Round_Pyramid_N_out(6, <0,0,0>, 1, <0,2,0>, 0.5, 0.1, 1, 0) }, <0,1,0>, 5, 0)
 Probe("Round_Pyramid_N_out hollow", object { Round_Pyramid_N_out(5, <0,0,0>, 1, <0.5,2,0>, 0.5, 0.1, 0, 0) }, <0,1,0>, 5, 0)
 Probe("Round_Pyramid_N_in", object { Round_Pyramid_N_in(6, <0,0,0>, 1, <0,2,0>, 0.5, 0.1, 1, 0) }, <0,1,0>, 5, 0)
@@ -71,7 +75,7 @@ Probe("Rounded_Tube", object { Rounded_Tube(1, 0.6, 0.1, 2, 0) }, <0,1,0>, 5, 1)
 Probe("Rounded_Tube_AB", object { Rounded_Tube_AB(<0,0,0>, <1,2,0.5>, 1, 0.6, 0.1, 1) }, <0.5,1,0.25>, 5, 0)
 Probe("Round_Conic_Torus", object { Round_Conic_Torus(1, 0.5, 1, 0.2, 0) }, <0,0.5,0>, 5, 0)
 Probe("Round_Conic_Prism", object { Round_Conic_Prism(1, 0.5, 1, 2, 0.2, 1) }, <0,0.5,-1>, 5, 0)
-Probe("Half_Hollowed_Rounded_Cylinder1", object { Half_Hollowed_Rounded_Cylinder1(3, 1, 0.1, 1.5, 0) }, 0, 5, 1)
-Probe("Half_Hollowed_Rounded_Cylinder2", object { Half_Hollowed_Rounded_Cylinder2(3, 1, 0.2, 0.1, 1.5, 1) }, 0, 5, 1)
+Probe("Half_Hollowed_Rounded_Cylinder1", object { Half_Hollowed_Rounded_Cylinder1(3, 1, 0.1, 1.5, 0) }, 0, 5, 0)
+Probe("Half_Hollowed_Rounded_Cylinder2", object { Half_Hollowed_Rounded_Cylinder2(3, 1, 0.2, 0.1, 1.5, 1) }, 0, 5, 0)
 Probe("Round_N_Tube_Polygon", object { Round_N_Tube_Polygon(6, 0.1, 1, 0.3, 0, 0) }, 0, 5, 0)
 Probe("Round_N_Tube_Polygon filled", object { Round_N_Tube_Polygon(5, 0.1, 1, 0.3, 1, 1) }, 0, 5, 0)
