@@ -80,9 +80,12 @@ struct light_set *light_set_new(const struct prepared *p)
 		L->fade_power = l->fade_power;
 		L->shadows = (feat & FEAT_SHADOWS) && !l->shadowless;
 		L->highlights = !l->shadowless;
-		L->area = L->shadows && (feat & FEAT_AREA_LIGHTS) && l->area && l->size1 * l->size2 > 1;
-		L->n1 = L->area ? l->size1 : 1;
-		L->n2 = L->area ? l->size2 : 1;
+		bool grid = (feat & FEAT_AREA_LIGHTS) && l->area && l->size1 * l->size2 > 1;
+		L->area = L->shadows && grid;
+		/* area_illumination holds for shadowless area lights too (measured). */
+		L->illum = grid && l->area_illumination;
+		L->n1 = grid ? l->size1 : 1;
+		L->n2 = grid ? l->size2 : 1;
 		L->adaptive = l->adaptive;
 		L->jitter = l->jitter;
 		L->circular = l->circular;
@@ -92,6 +95,10 @@ struct light_set *light_set_new(const struct prepared *p)
 		L->len1 = v3_len(l->axis1);
 		L->len2 = v3_len(l->axis2);
 		L->projector = l->projected_through;
+		if (L->illum) {
+			L->illum_off = s->illum_points;
+			s->illum_points += (size_t)L->n1 * (size_t)L->n2;
+		}
 		L->slot = s->slots;
 		s->slots += (size_t)L->n1;
 		if ((size_t)L->n1 * (size_t)L->n2 > s->max_samples)
@@ -155,18 +162,25 @@ static double smooth(double t)
 	return t <= 0 ? 0 : t >= 1 ? 1 : t * t * (3 - 2 * t);
 }
 
-bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
+/* light_at for the light moved to lpos, its cone (a spotlight's apex, a
+ * cylinder's axis) moved with it, and faded by the distance to lpos: how
+ * area_illumination lights from each point of the grid (measured). */
+static bool light_from(const struct light_rt *L, vec3 lpos, vec3 pt, struct light_ray *out)
 {
-	vec3 lv = v3_sub(L->pos, pt);
+	vec3 lv = v3_sub(lpos, pt);
 	double d = v3_len(lv);
+	out->atten = 0;
 	if (L->along_axis) {
 		out->dir = v3_neg(L->axis);
 		/* Shadows are cast between the point and the light's plane. */
 		double h = v3_dot(lv, out->dir);
 		out->dist = h > 0 ? h : 0;
 	} else {
-		if (d == 0)
+		if (d == 0) {
+			out->dir = v3(0, 0, 0);
+			out->dist = 0;
 			return false;
+		}
 		out->dir = v3_scale(lv, 1 / d);
 		out->dist = d;
 	}
@@ -196,6 +210,11 @@ bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
 		atten *= 2 / (1 + pow(d / L->fade_distance, L->fade_power));
 	out->atten = atten;
 	return atten > 0;
+}
+
+bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
+{
+	return light_from(L, L->pos, pt, out);
 }
 
 vec3 light_target(const struct light_rt *L, vec3 pt, const struct light_ray *lr)
@@ -232,29 +251,35 @@ struct area_run {
 	uint32_t hx, hy;  /* the point's hash, for jitter */
 };
 
-/* The result of sample (i, j), tested once per point. */
-static rgb area_sample(struct area_run *r, int i, int j)
+/* Where sample (i, j) of the grid lies for this point. */
+static vec3 area_point(const struct area_run *r, int i, int j)
 {
 	const struct light_rt *L = r->L;
-	size_t k = (size_t)j * (size_t)L->n1 + (size_t)i;
-	if (r->sc->stamp[k] == r->sc->now)
-		return r->sc->val[k];
+	uint32_t k = (uint32_t)j * (uint32_t)L->n1 + (uint32_t)i;
 	double u = L->n1 > 1 ? 2.0 * i / (L->n1 - 1) - 1 : 0;
 	double v = L->n2 > 1 ? 2.0 * j / (L->n2 - 1) - 1 : 0;
 	if (L->jitter) {
 		/* Anywhere in the sample's cell. */
 		if (L->n1 > 1)
-			u += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_U) - 0.5) * 2.0 / (L->n1 - 1);
+			u += (hash_uniform(r->hx, r->hy, k, PURPOSE_JITTER_U) - 0.5) * 2.0 / (L->n1 - 1);
 		if (L->n2 > 1)
-			v += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_V) - 0.5) * 2.0 / (L->n2 - 1);
+			v += (hash_uniform(r->hx, r->hy, k, PURPOSE_JITTER_V) - 0.5) * 2.0 / (L->n2 - 1);
 	}
 	if (L->circular && (u != 0 || v != 0)) {
 		double m = fmax(fabs(u), fabs(v)) / sqrt(u * u + v * v);
 		u *= m;
 		v *= m;
 	}
-	vec3 target = v3_madd(v3_madd(r->base, r->a1, u / 2), r->a2, v / 2);
-	rgb c = r->test(r->ctx, target, i);
+	return v3_madd(v3_madd(r->base, r->a1, u / 2), r->a2, v / 2);
+}
+
+/* The result of sample (i, j), tested once per point. */
+static rgb area_sample(struct area_run *r, int i, int j)
+{
+	size_t k = (size_t)j * (size_t)r->L->n1 + (size_t)i;
+	if (r->sc->stamp[k] == r->sc->now)
+		return r->sc->val[k];
+	rgb c = r->test(r->ctx, area_point(r, i, j), i);
 	r->sc->val[k] = c;
 	r->sc->stamp[k] = r->sc->now;
 	return c;
@@ -307,11 +332,14 @@ static uint32_t point_hash(vec3 p, int which)
 	return (uint32_t)(h >> 32);
 }
 
-rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
-               area_test_fn test, void *ctx)
+/* Set up r for area light L seen from pt: the grid's centre and axes
+ * (turned to face pt with orient) and the point's hash for jitter. */
+static void area_run_init(struct area_run *r, const struct light_rt *L, vec3 pt, const struct light_ray *lr)
 {
-	struct area_run r = {.L = L, .sc = sc, .test = test, .ctx = ctx, .a1 = L->axis1, .a2 = L->axis2};
-	r.base = light_target(L, pt, lr);
+	r->L = L;
+	r->a1 = L->axis1;
+	r->a2 = L->axis2;
+	r->base = light_target(L, pt, lr);
 	if (L->orient) {
 		/* Face the point: the axes across the way from the light to it. */
 		vec3 d = v3_norm(v3_sub(pt, L->pos));
@@ -321,18 +349,41 @@ rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, st
 		if (al > 0) {
 			a = v3_scale(a, 1 / al);
 			vec3 b = v3_norm(v3_cross(d, a));
-			r.a1 = v3_scale(a, L->len1);
-			r.a2 = v3_scale(b, L->len2);
+			r->a1 = v3_scale(a, L->len1);
+			r->a2 = v3_scale(b, L->len2);
 		}
 	}
 	if (L->jitter) {
-		r.hx = point_hash(pt, 0);
-		r.hy = point_hash(pt, 1);
+		r->hx = point_hash(pt, 0);
+		r->hy = point_hash(pt, 1);
 	}
+}
+
+rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
+               area_test_fn test, void *ctx)
+{
+	struct area_run r = {.sc = sc, .test = test, .ctx = ctx};
+	area_run_init(&r, L, pt, lr);
 	if (++sc->now == 0) {
 		/* The stamps wrapped around: forget them all. */
 		memset(sc->stamp, 0, sc->n * sizeof *sc->stamp);
 		sc->now = 1;
 	}
 	return area_block(&r, 0, 0, L->n1 - 1, L->n2 - 1, 0);
+}
+
+bool light_area_points(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct light_point *out)
+{
+	struct area_run r = {0};
+	area_run_init(&r, L, pt, lr);
+	bool any = false;
+	for (int j = 0; j < L->n2; j++)
+		for (int i = 0; i < L->n1; i++) {
+			struct light_ray q;
+			struct light_point *o = &out[(size_t)j * (size_t)L->n1 + (size_t)i];
+			any |= light_from(L, area_point(&r, i, j), pt, &q);
+			o->dir = q.dir;
+			o->atten = q.atten;
+		}
+	return any;
 }

@@ -33,6 +33,13 @@ struct light_rt {
 	double len1, len2;    /* their lengths, for orient */
 	const struct object *projector; /* projected_through, or NULL */
 	size_t slot;          /* its first last-blocker slot (one per grid column of an area light) */
+	/* area_illumination (an area light, with or without shadows): the
+	 * diffuse and highlights are the mean over the n1 x n2 points of the
+	 * grid, each lighting from its own direction with its own cone and
+	 * fading; illum_off is the light's first entry in the tracer's table
+	 * of light_point. */
+	bool illum;
+	size_t illum_off;
 };
 
 /* The lights of a scene, and for each light group the lights that reach
@@ -45,12 +52,19 @@ struct light_set {
 	size_t ngroups;
 	size_t slots;         /* last-blocker slots in all */
 	size_t max_samples;   /* the largest area grid */
+	size_t illum_points;  /* the grid points of all area_illumination lights */
 };
 
 /* The lights of p's scene as the tracer uses them (p->features decides
  * which effects are computed). Free with light_set_free. */
 struct light_set *light_set_new(const struct prepared *p);
 void light_set_free(struct light_set *s);
+
+/* One point of an area_illumination grid seen from a point. */
+struct light_point {
+	vec3 dir;       /* unit, toward it */
+	double atten;   /* its cone and fading; 0: no light from it */
+};
 
 /* A light seen from a point. */
 struct light_ray {
@@ -60,7 +74,8 @@ struct light_ray {
 };
 
 /* The light L at point pt; false when none arrives there (outside a cone,
- * behind a cylinder light, at the light itself). */
+ * behind a cylinder light: atten is then 0, dir and dist are set; at the
+ * light itself: dir is 0 too). */
 bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out);
 
 /* Per-thread scratch for area lights: each sample's result once per point. */
@@ -87,6 +102,13 @@ typedef rgb (*area_test_fn)(void *ctx, vec3 target, int column);
  * on threads or order. */
 rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
                area_test_fn test, void *ctx);
+
+/* The n1 x n2 points of area light L seen from pt (whose light ray is
+ * lr), placed where light_area's samples lie (orient, circular and jitter
+ * applied), each with its direction and attenuation as light_at_point
+ * gives them: point (i, j) goes to out[j * n1 + i]. False when no light
+ * arrives from any of them. */
+bool light_area_points(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct light_point *out);
 
 /* The target of the single sample of a light that is not an area: the
  * light's position, or for light along an axis the point on its plane. */

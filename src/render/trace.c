@@ -18,6 +18,8 @@ struct lit {
 	bool back;   /* the light is behind the face the ray sees */
 	bool on;     /* lights the surface at all */
 	bool highlights; /* makes highlights (shadowless lights make none) */
+	const struct light_point *pts; /* area_illumination: the grid's points; NULL: dir alone */
+	size_t npts;
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p)
@@ -28,7 +30,8 @@ void tracer_init(struct tracer *tr, const struct prepared *p)
 	size_t n = p->scene->nlights ? p->scene->nlights : 1;
 	tr->last_blocker = calloc(tr->lights->slots ? tr->lights->slots : 1, sizeof *tr->last_blocker);
 	tr->lit = calloc(n, sizeof *tr->lit);
-	if (!tr->last_blocker || !tr->lit) abort();
+	tr->illum = malloc((tr->lights->illum_points ? tr->lights->illum_points : 1) * sizeof *tr->illum);
+	if (!tr->last_blocker || !tr->lit || !tr->illum) abort();
 	area_scratch_init(&tr->area, tr->lights->max_samples);
 }
 
@@ -36,10 +39,12 @@ void tracer_free(struct tracer *tr)
 {
 	free(tr->last_blocker);
 	free(tr->lit);
+	free(tr->illum);
 	light_set_free(tr->lights);
 	area_scratch_free(&tr->area);
 	tr->last_blocker = NULL;
 	tr->lit = NULL;
+	tr->illum = NULL;
 	tr->lights = NULL;
 }
 
@@ -360,18 +365,37 @@ static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_
 		struct lit *l = &tr->lit[li];
 		l->on = false;
 		struct light_ray lr;
-		if (!light_at(L, s->pt, &lr))
+		/* An area_illumination light lights from its grid's points, whose
+		 * cones are their own: its centre may be outside its cone. */
+		if (!light_at(L, s->pt, &lr) && !(L->illum && v3_dot(lr.dir, lr.dir) > 0))
 			continue;
 		l->dir = lr.dir;
 		double c = v3_dot(s->n, l->dir);
 		if (c == 0)
 			continue;
 		l->back = c < 0;
-		if (l->back && !back_wanted)
-			continue;
+		if (l->back && !back_wanted) {
+			/* Part of an area_illumination grid may still be in front
+			 * (POV-Ray lights from those points, measured). */
+			if (!L->illum)
+				continue;
+			l->back = false;
+		}
 		l->highlights = L->highlights;
+		l->pts = NULL;
+		l->npts = 0;
 		vec3 side = l->back ? v3_neg(s->n) : s->n;
 		vec3 from = v3_madd(s->pt, side, s->eps);
+		if (L->illum) {
+			/* The cones and fading are those of each grid point
+			 * (applied in the shading); the shadows are the grid's. */
+			struct light_point *pts = tr->illum + L->illum_off;
+			if (!light_area_points(L, from, &lr, pts))
+				continue;
+			l->pts = pts;
+			l->npts = (size_t)L->n1 * (size_t)L->n2;
+			lr.atten = 1;
+		}
 		rgb lc = lr.atten == 1 ? L->color : rgb_scale(L->color, lr.atten);
 		l->color = lc;
 		if (L->shadows && lr.dist > 0) {
@@ -463,6 +487,51 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 	return trace_ray_in(tr, &r, n1 == n2 ? s->depth : s->depth + 1, RAY_REFRACTED, weight, after, &any);
 }
 
+/* The diffuse light and highlights of layer y at s from a light lt
+ * arriving along the unit direction ldir, n being the layer's normal on
+ * the side the light is (dbl: the object has double_illuminate), before
+ * the light's colour: zero when ldir is behind n. */
+static rgb light_terms(unsigned feat, const struct layer *y, const struct surface *s, vec3 n, vec3 ldir,
+                       const struct lit *lt, bool dbl)
+{
+	const struct finish *f = y->fin;
+	double cosl = v3_dot(n, ldir);
+	rgb acc = rgb_make(0, 0, 0);
+	if (cosl <= 0)
+		return acc;
+	double kd = lt->back && !dbl ? f->diffuse_back : f->diffuse;
+	if (kd != 0) {
+		double k = kd * (f->brilliance == 1.0 ? cosl : pow(cosl, f->brilliance));
+		if (f->crand > 0)
+			k -= f->crand * hash_uniform((uint32_t)(s->pt.x * 1e4), (uint32_t)(s->pt.y * 1e4),
+			                             (uint32_t)(s->pt.z * 1e4), 7) * kd;
+		rgb d = rgb_scale(y->pig, k * y->opacity);
+		if ((feat & FEAT_IRID) && f->irid != 0) {
+			double cv = fabs(v3_dot(s->dir, n));
+			rgb ir = shade_irid(f->irid, f->irid_thickness, (cosl + cv) / 2, rgb_make(0.70, 0.52, 0.48));
+			d = rgb_mul(d, rgb_make(1 + ir.r, 1 + ir.g, 1 + ir.b));
+		}
+		acc = rgb_add(acc, d);
+	}
+	if (!lt->back && lt->highlights) {
+		if ((feat & FEAT_PHONG) && f->phong > 0) {
+			double c = v3_dot(v3_reflect(s->dir, n), ldir);
+			if (c > 0) {
+				rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+				acc = rgb_add(acc, rgb_scale(hc, f->phong * pow(c, f->phong_size)));
+			}
+		}
+		if ((feat & FEAT_SPECULAR) && f->specular > 0) {
+			double c = v3_dot(n, v3_norm(v3_sub(ldir, s->dir)));
+			if (c > 0) {
+				rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+				acc = rgb_add(acc, rgb_scale(hc, f->specular * pow(c, 1.0 / f->roughness)));
+			}
+		}
+	}
+	return acc;
+}
+
 /* The colour of the plain-texture stack t (t, t->next, ...) at s: each
  * layer's ambient, emission and diffuse light scaled by its opacity, its
  * highlights whole, both filtered by the layers above; the reflections of
@@ -533,41 +602,18 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				continue;
 			for (int i = 0; i < nl; i++) {
 				const struct layer *y = &L[i];
-				const struct finish *f = y->fin;
 				vec3 n = lt->back ? v3_neg(y->n) : y->n;
-				double cosl = v3_dot(n, lt->dir);
-				if (cosl <= 0)
-					continue;
-				rgb acc = rgb_make(0, 0, 0);
-				double kd = lt->back && !dbl ? f->diffuse_back : f->diffuse;
-				if (kd != 0) {
-					double k = kd * (f->brilliance == 1.0 ? cosl : pow(cosl, f->brilliance));
-					if (f->crand > 0)
-						k -= f->crand * hash_uniform((uint32_t)(s->pt.x * 1e4), (uint32_t)(s->pt.y * 1e4),
-						                             (uint32_t)(s->pt.z * 1e4), 7) * kd;
-					rgb d = rgb_scale(y->pig, k * y->opacity);
-					if ((feat & FEAT_IRID) && f->irid != 0) {
-						double cv = fabs(v3_dot(s->dir, n));
-						rgb ir = shade_irid(f->irid, f->irid_thickness, (cosl + cv) / 2, rgb_make(0.70, 0.52, 0.48));
-						d = rgb_mul(d, rgb_make(1 + ir.r, 1 + ir.g, 1 + ir.b));
-					}
-					acc = rgb_add(acc, d);
-				}
-				if (!lt->back && lt->highlights) {
-					if ((feat & FEAT_PHONG) && f->phong > 0) {
-						double c = v3_dot(v3_reflect(s->dir, n), lt->dir);
-						if (c > 0) {
-							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
-							acc = rgb_add(acc, rgb_scale(hc, f->phong * pow(c, f->phong_size)));
-						}
-					}
-					if ((feat & FEAT_SPECULAR) && f->specular > 0) {
-						double c = v3_dot(n, v3_norm(v3_sub(lt->dir, s->dir)));
-						if (c > 0) {
-							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
-							acc = rgb_add(acc, rgb_scale(hc, f->specular * pow(c, 1.0 / f->roughness)));
-						}
-					}
+				rgb acc;
+				if (!lt->pts) {
+					acc = light_terms(feat, y, s, n, lt->dir, lt, dbl);
+				} else {
+					/* area_illumination: the mean over the grid's points. */
+					acc = rgb_make(0, 0, 0);
+					for (size_t k = 0; k < lt->npts; k++)
+						if (lt->pts[k].atten > 0)
+							acc = rgb_add(acc, rgb_scale(light_terms(feat, y, s, n, lt->pts[k].dir, lt, dbl),
+							                             lt->pts[k].atten));
+					acc = rgb_scale(acc, 1.0 / (double)lt->npts);
 				}
 				col = rgb_add(col, rgb_mul(y->above, rgb_mul(acc, lt->color)));
 			}

@@ -20,6 +20,8 @@ struct tracer {
 	struct lit *lit;                     /* per light: scratch for one surface's lighting */
 	struct light_set *lights;            /* the lights as sampled, and who sees which */
 	struct area_scratch area;            /* area-light samples of the point being lit */
+	struct light_point *illum;           /* area_illumination: each grid point as seen from the
+	                                      * point being lit (at the light's illum_off) */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);
