@@ -90,28 +90,23 @@ void area_scratch_free(struct area_scratch *a);
 
 /* The shadow test of one sample: the light arriving at the point from
  * `target` (a point on the light, or, for light along an axis, the point
- * where the sample's ray leaves the light's plane). `column` picks the
+ * where the way toward the sample leaves the sample's plane). `column` picks the
  * last-blocker slot. */
 typedef rgb (*area_test_fn)(void *ctx, vec3 target, int column);
 
-/* The light of area light L arriving at pt (whose light ray is lr), as
- * POV-Ray computes it: corners of the grid first, blocks subdivided where
+/* The light of area light L arriving at pt, as POV-Ray computes it: corners of the grid first, blocks subdivided where
  * their corners differ by more than 0.1 (sum over the channels) or while
  * the level is below `adaptive`, each block the mean of its halves. Jitter
  * comes from a hash of pt and the sample, so the result does not depend
  * on threads or order. */
-rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
+rgb light_area(const struct light_rt *L, vec3 pt, struct area_scratch *sc,
                area_test_fn test, void *ctx);
 
-/* The n1 x n2 points of area light L seen from pt (whose light ray is
- * lr), placed where light_area's samples lie (orient, circular and jitter
- * applied), each with its direction and attenuation as light_at_point
- * gives them: point (i, j) goes to out[j * n1 + i]. False when no light
- * arrives from any of them. */
-bool light_area_points(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct light_point *out);
-
-/* The target of the single sample of a light that is not an area: the
- * light's position, or for light along an axis the point on its plane. */
-vec3 light_target(const struct light_rt *L, vec3 pt, const struct light_ray *lr);
+/* The n1 x n2 points of area light L seen from pt, placed where
+ * light_area's samples lie (orient, circular and jitter applied), each
+ * with the direction and attenuation area_illumination lights pt with
+ * from it (see light.c): point (i, j) goes to out[j * n1 + i]. False when
+ * no light arrives from any of them. */
+bool light_area_points(const struct light_rt *L, vec3 pt, struct light_point *out);
 
 #endif

@@ -390,7 +390,7 @@ static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_
 			/* The cones and fading are those of each grid point
 			 * (applied in the shading); the shadows are the grid's. */
 			struct light_point *pts = tr->illum + L->illum_off;
-			if (!light_area_points(L, from, &lr, pts))
+			if (!light_area_points(L, from, pts))
 				continue;
 			l->pts = pts;
 			l->npts = (size_t)L->n1 * (size_t)L->n2;
@@ -401,7 +401,7 @@ static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_
 		if (L->shadows && lr.dist > 0) {
 			if (L->area) {
 				struct shadow_ctx ctx = {tr, L, from, s->eps, s->med, lc};
-				l->color = light_area(L, from, &lr, &tr->area, area_test, &ctx);
+				l->color = light_area(L, from, &tr->area, area_test, &ctx);
 			} else {
 				double d = lr.dist;
 				if (!L->projector || (d = projected_dist(L, from, lr.dir, d)) >= 0)
