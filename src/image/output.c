@@ -64,8 +64,16 @@ static void *encode(const struct framebuffer *fb, const struct img_out *o, int c
 				/* To linear light, then to the file's encoding. */
 				if (o->gamma != 1.0)
 					v = v > 0 ? pow(v, o->gamma) : 0;
-				if (type != OIIO_FLOAT)
+				if (type != OIIO_FLOAT) {
+					/* The colour is associated with alpha (what shows over
+					 * black); integer files hold it unassociated, as
+					 * POV-Ray writes them (measured: PNG bytes of
+					 * encode(colour / alpha), clipped at 1). */
+					double a = channels == 4 ? fmin(fmax(px[3], 0), 1) : 1;
+					if (a < 1)
+						v = a > 0 ? v / a : 0;
 					v = img_srgb_encode(fmin(fmax(v, 0), 1));
+				}
 			}
 			size_t k = i * (size_t)channels + (size_t)c;
 			if (type == OIIO_FLOAT) {

@@ -216,6 +216,13 @@ static const struct texture *plain_of(const struct texture *t, const struct surf
 	return t;
 }
 
+/* POV-Ray's grey of a colour (its weights for the transmit channel that
+ * a filtering surface passes on, measured with +UA). */
+static double gray_of(rgb c)
+{
+	return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+}
+
 /* What a plain layer lets through: filter * colour + transmit. */
 static rgb layer_filter(struct rgbft c)
 {
@@ -544,6 +551,9 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	struct layer L[MAX_LAYERS];
 	int nl = 0;
 	rgb filt = rgb_make(1, 1, 1);
+	/* The share of the background the layers let through: the product
+	 * of the grey of each layer's filter (measured with +UA). */
+	double tpass = 1;
 	bool back_wanted = (s->obj->flags & OBJ_DOUBLE_ILLUMINATE) != 0;
 	struct medium after = {0};
 	double n_rel = 1;
@@ -573,6 +583,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		if (y->fin->conserve_energy)
 			lf = rgb_mul(lf, rgb_make(1 - y->refl.r, 1 - y->refl.g, 1 - y->refl.b));
 		filt = rgb_mul(filt, lf);
+		tpass *= gray_of(lf);
 		if (rgb_max(filt) <= 0 || pl != l)
 			break;
 	}
@@ -580,6 +591,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	 * pigments' colours as they are: each layer through the transparency
 	 * of those above it, the last one whole (measured: a clear glass
 	 * shows its colour, a clear top layer the one below). */
+	tr->transmit = 0; /* until a transmitted ray says otherwise */
 	if (p->quality < 2) {
 		rgb c = rgb_make(0, 0, 0);
 		for (int i = 0; i < nl; i++)
@@ -638,9 +650,15 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
 		/* Quality below 6 transmits no ray (prepare_quality). */
+		double through = 0;
 		if ((feat & FEAT_TRANSPARENCY) && p->quality >= 6 && weight * rgb_max(filt) >= bail &&
-		    rgb_max(filt) > 0)
+		    rgb_max(filt) > 0) {
 			col = rgb_add(col, rgb_mul(filt, transmit(tr, s, L[0].n, weight * rgb_max(filt), &after)));
+			through = tpass * tr->transmit;
+		}
+		/* What no transmitted ray reaches is opaque (measured: below
+		 * adc_bailout or at max_trace_level the alpha is 1). */
+		tr->transmit = through;
 	}
 	return col;
 }
@@ -650,8 +668,10 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
  * does); material maps take the entry the image's palette index names. */
 static rgb shade_texture(struct tracer *tr, const struct texture *t, const struct surface *s, double weight)
 {
-	if (!t)
+	if (!t) {
+		tr->transmit = 0;
 		return rgb_make(0, 0, 0);
+	}
 	if (t->kind == TEX_PLAIN || !t->map || t->map->n == 0)
 		return shade_layers(tr, t, s, weight);
 	const struct blend_map *m = t->map;
@@ -674,7 +694,9 @@ static rgb shade_texture(struct tracer *tr, const struct texture *t, const struc
 	if (w >= 1)
 		return shade_texture(tr, m->e[hi].item, s, weight);
 	rgb a = shade_texture(tr, m->e[lo].item, s, weight * (1 - w));
+	double ta = tr->transmit;
 	rgb b = shade_texture(tr, m->e[hi].item, s, weight * w);
+	tr->transmit = ta * (1 - w) + tr->transmit * w;
 	return rgb_add(rgb_scale(a, 1 - w), rgb_scale(b, w));
 }
 
@@ -696,14 +718,15 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		struct rgbft bg = atmos_escape(p, dir);
 		if (p->features & (FEAT_FOG | FEAT_RAINBOW))
 			bg = atmos_apply(p, r->org, dir, ATMOS_MISS_DEPTH, bg);
-		/* The pixel counts as opaque when less than half of it is
-		 * see-through (POV-Ray's alpha is 1 - bg.t). */
-		*hit_anything = bg.t < 0.5;
+		*hit_anything = false;
+		tr->transmit = bg.t;
 		return fading ? rgb_mul(rgb_of(bg), shade_fade(fading, INFINITY)) : rgb_of(bg);
 	}
 	*hit_anything = true;
-	if (p->signature)
+	if (p->signature) {
+		tr->transmit = 0;
 		return signature_color(h.obj->id);
+	}
 	struct surface s = {.obj = h.obj, .med = med, .depth = depth};
 	s.dir = v3_norm(r->dir);
 	s.pt = v3_madd(r->org, r->dir, h.t);
@@ -726,8 +749,10 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		col = rgb_mul(col, shade_fade(fading, h.t * v3_len(r->dir)));
 	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
 		double len = v3_len(r->dir);
-		struct rgbft c = {col.r, col.g, col.b, 0, 0};
-		col = rgb_of(atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c));
+		struct rgbft c = {col.r, col.g, col.b, 0, tr->transmit};
+		c = atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c);
+		col = rgb_of(c);
+		tr->transmit = c.t;
 	}
 	return col;
 }
@@ -735,5 +760,8 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)
 {
 	const struct medium *m = tr->p->camera_medium.n ? &tr->p->camera_medium : NULL;
-	return trace_ray_in(tr, r, depth, kind, 1.0, m, hit_anything);
+	rgb c = trace_ray_in(tr, r, depth, kind, 1.0, m, hit_anything);
+	tr->camera_transmit += tr->transmit;
+	tr->camera_rays++;
+	return c;
 }
