@@ -327,6 +327,7 @@ int main(int argc, char **argv)
 		 * doc/rendering.md); a scene without gamma handling works in
 		 * linear light. */
 		.aa_exponent = (gamma > 0 ? gamma : 1.0) / opt.aa_gamma,
+		.alpha = opt.alpha,
 	};
 	if (opt.verbose && !opt.quiet)
 		fprintf(stderr, "lucent: %s: %zu objects (%zu unbounded), %zu lights, %zu BVH nodes; "

@@ -37,8 +37,12 @@ extern "C" int lucent_oiio_write(const char *path, const char *format, int width
 		}
 		TypeDesc td = type == OIIO_UINT8 ? TypeDesc::UINT8 : type == OIIO_UINT16 ? TypeDesc::UINT16 : TypeDesc::FLOAT;
 		ImageSpec spec(width, height, channels, td);
-		if (channels == 4)
+		if (channels == 4) {
 			spec.alpha_channel = 3;
+			/* Integer pixels come unassociated (output.c): no conversion. */
+			if (type != OIIO_FLOAT)
+				spec.attribute("oiio:UnassociatedAlpha", 1);
+		}
 		spec.attribute("Software", "lucent");
 		if (srgb)
 			spec.attribute("oiio:ColorSpace", "sRGB");

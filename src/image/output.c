@@ -52,8 +52,11 @@ static bool is_native_format(enum img_format f) { return f == IMG_PNG || f == IM
 
 /* One value of pixel px, channel c, in the file's encoding before
  * quantisation: linear light brought to sRGB (unless legacy gamma), or as
- * it is for float files. */
-static double encoded(const float *px, int c, const struct img_out *o, bool is_float)
+ * it is for float files. The framebuffer's colour is associated with
+ * alpha (what shows over black); integer files with alpha hold it
+ * unassociated, as POV-Ray writes them (measured: PNG bytes of
+ * encode(colour / alpha), clipped at 1). */
+static double encoded(const float *px, int c, const struct img_out *o, bool is_float, bool has_alpha)
 {
 	double v = px[c];
 	if (!isfinite(v))
@@ -62,8 +65,12 @@ static double encoded(const float *px, int c, const struct img_out *o, bool is_f
 		/* To linear light, then to the file's encoding. */
 		if (o->gamma != 1.0)
 			v = v > 0 ? pow(v, o->gamma) : 0;
-		if (!is_float)
+		if (!is_float) {
+			double a = has_alpha && isfinite(px[3]) ? fmin(fmax(px[3], 0), 1) : 1;
+			if (a < 1)
+				v = a > 0 ? v / a : 0;
 			v = img_srgb_encode(fmin(fmax(v, 0), 1));
+		}
 	}
 	return v;
 }
@@ -83,7 +90,7 @@ static void *encode(const struct framebuffer *fb, const struct img_out *o, int c
 	for (size_t i = 0; i < n; i++) {
 		const float *px = fb->px + i * 4;
 		for (int c = 0; c < channels; c++) {
-			double v = encoded(px, c, o, type == OIIO_FLOAT);
+			double v = encoded(px, c, o, type == OIIO_FLOAT, channels == 4);
 			size_t k = i * (size_t)channels + (size_t)c;
 			if (type == OIIO_FLOAT)
 				((float *)buf)[k] = (float)v;
@@ -101,12 +108,10 @@ static void *encode(const struct framebuffer *fb, const struct img_out *o, int c
  * the formats moved out of the module (checked against the module on every
  * 8-bit value/alpha pair and a million 16-bit ones):
  * - colours are quantised to 8 or 16 bits (round to nearest);
- * - a file with alpha gets its colours divided by alpha (the framebuffer's
- *   are associated, the files' straight) on the quantised values: a colour
- *   v under alpha a > 0 becomes floor(v * max / a), or max where v >= a;
- *   under alpha 0 it stays;
+ * - a file with alpha gets its colours divided by alpha before they are
+ *   encoded (encoded(), as POV-Ray writes them);
  * - TGA holds 8 bits: +F..16 quantises to 16 bits first, then rounds to 8
- *   (floor((v * 255 + 32767) / 65535)), then divides by alpha.
+ *   (floor((v * 255 + 32767) / 65535)).
  * Returns a malloc'd buffer of width*height*channels samples (uint8_t or
  * uint16_t by bits), or NULL when out of memory. */
 static void *encode_native(const struct framebuffer *fb, const struct img_out *o, int channels, int bits)
@@ -122,15 +127,12 @@ static void *encode_native(const struct framebuffer *fb, const struct img_out *o
 		const float *px = fb->px + i * 4;
 		uint32_t q[4];
 		for (int c = 0; c < channels; c++) {
-			double v = encoded(px, c, o, false);
+			double v = encoded(px, c, o, false, channels == 4);
 			if (to8)
 				q[c] = ((uint32_t)quantise(v, 65535) * 255 + 32767) / 65535;
 			else
 				q[c] = (uint32_t)quantise(v, maxv);
 		}
-		if (channels == 4 && q[3] != 0)
-			for (int c = 0; c < 3; c++)
-				q[c] = q[c] < q[3] ? q[c] * maxv / q[3] : maxv;
 		for (int c = 0; c < channels; c++) {
 			size_t k = i * (size_t)channels + (size_t)c;
 			if (bits == 8)

@@ -71,6 +71,7 @@ static void need_cone(struct parser *p, const struct light *l, const struct toke
  * light_item := spotlight | cylinder | parallel | shadowless
  *   | radius F | falloff F | tightness F | point_at V
  *   | area_light V ',' V ',' F ',' F | adaptive F | jitter | circular | orient
+ *   | area_illumination [BOOL]
  *   | fade_distance F | fade_power F
  *   | media_interaction [BOOL] | media_attenuation [BOOL]
  *   | looks_like '{' OBJECT '}' | projected_through '{' OBJECT '}'
@@ -182,6 +183,7 @@ void parse_light(struct parser *p, struct light *l)
 		case KW_JITTER: parse_advance(p); l->jitter = true; break;
 		case KW_CIRCULAR: parse_advance(p); l->circular = true; break;
 		case KW_ORIENT: parse_advance(p); l->orient = true; orient_at = kw.pos; break;
+		case KW_AREA_ILLUMINATION: parse_advance(p); l->area_illumination = parse_opt_bool(p); break;
 		case KW_FADE_DISTANCE: parse_advance(p); l->fade_distance = parse_float(p); break;
 		case KW_FADE_POWER: parse_advance(p); l->fade_power = parse_float(p); break;
 		case KW_MEDIA_INTERACTION: parse_advance(p); l->media_interaction = parse_opt_bool(p); break;

@@ -9,10 +9,15 @@
  *   along the axis (shading and shadows, like a parallel light), and points
  *   behind it get none;
  * - fading: 2 / (1 + (d / fade_distance)^fade_power), d the distance to
- *   the light's location (for parallel lights too);
+ *   the light's location; for parallel and cylinder lights the signed
+ *   distance to the plane through the location across the axis;
  * - area lights: sample (i, j) of an n1 x n2 grid sits at
  *   pos + axis1 (i / (n1 − 1) − ½) + axis2 (j / (n2 − 1) − ½); the shading
- *   uses pos, only shadows use the grid. The grid is sampled by blocks:
+ *   uses pos, only shadows use the grid. A parallel or cylinder light's
+ *   sample is a parallel light of its own, running from the sample toward
+ *   point_at, shadows stopping at the plane through the sample across
+ *   that way (so the penumbra is the grid's size seen from point_at).
+ *   The grid is sampled by blocks:
  *   a block is the mean of its four corners when its sides are at most one
  *   step, or when it is at level `adaptive` or deeper and its corners agree
  *   (no two differ by more than 0.1, summed over r, g, b); otherwise it is
@@ -22,7 +27,14 @@
  * - circular: the square's point (u, v) in [−1, 1]² moves along its
  *   radius to length max(|u|, |v|);
  * - orient: the grid is turned to face the point: axis1 along d × z (d ×
- *   y when d is nearly ±z), axis2 along d × axis1, with their lengths. */
+ *   y when d is nearly ±z), axis2 along d × axis1, with their lengths;
+ * - area_illumination: the diffuse and highlights are the plain mean over
+ *   all n1 × n2 samples (whatever `adaptive` says), each lighting from its
+ *   own direction with its own fading; a spotlight's cone moves to each
+ *   sample with its axis unchanged, a cylinder light keeps the cylinder
+ *   of its location. The shadows stay those above, and multiply the mean.
+ *   Samples behind the surface add nothing, and the light counts even
+ *   where its location is behind the surface or outside its cone. */
 #include "render/light.h"
 
 #include "math/hash.h"
@@ -80,9 +92,12 @@ struct light_set *light_set_new(const struct prepared *p)
 		L->fade_power = l->fade_power;
 		L->shadows = (feat & FEAT_SHADOWS) && !l->shadowless;
 		L->highlights = !l->shadowless;
-		L->area = L->shadows && (feat & FEAT_AREA_LIGHTS) && l->area && l->size1 * l->size2 > 1;
-		L->n1 = L->area ? l->size1 : 1;
-		L->n2 = L->area ? l->size2 : 1;
+		bool grid = (feat & FEAT_AREA_LIGHTS) && l->area && l->size1 * l->size2 > 1;
+		L->area = L->shadows && grid;
+		/* area_illumination holds for shadowless area lights too (measured). */
+		L->illum = grid && l->area_illumination;
+		L->n1 = grid ? l->size1 : 1;
+		L->n2 = grid ? l->size2 : 1;
 		L->adaptive = l->adaptive;
 		L->jitter = l->jitter;
 		L->circular = l->circular;
@@ -92,6 +107,10 @@ struct light_set *light_set_new(const struct prepared *p)
 		L->len1 = v3_len(l->axis1);
 		L->len2 = v3_len(l->axis2);
 		L->projector = l->projected_through;
+		if (L->illum) {
+			L->illum_off = s->illum_points;
+			s->illum_points += (size_t)L->n1 * (size_t)L->n2;
+		}
 		L->slot = s->slots;
 		s->slots += (size_t)L->n1;
 		if ((size_t)L->n1 * (size_t)L->n2 > s->max_samples)
@@ -155,52 +174,94 @@ static double smooth(double t)
 	return t <= 0 ? 0 : t >= 1 ? 1 : t * t * (3 - 2 * t);
 }
 
-bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
+/* The way from pt to the light at lpos whose light runs along the unit
+ * axis (for parallel and cylinder lights): out's direction and shadow
+ * distance, atten 0. Returns the distance that fades the light: to lpos,
+ * or for light along an axis the signed distance to the light's plane
+ * (measured: constant over a plane across the axis; negative behind it). */
+static double light_way(const struct light_rt *L, vec3 lpos, vec3 axis, vec3 pt, struct light_ray *out)
 {
-	vec3 lv = v3_sub(L->pos, pt);
-	double d = v3_len(lv);
+	vec3 lv = v3_sub(lpos, pt);
+	out->atten = 0;
 	if (L->along_axis) {
-		out->dir = v3_neg(L->axis);
+		out->dir = v3_neg(axis);
 		/* Shadows are cast between the point and the light's plane. */
 		double h = v3_dot(lv, out->dir);
 		out->dist = h > 0 ? h : 0;
+		return h;
+	}
+	double d = v3_len(lv);
+	if (d == 0) {
+		out->dir = v3(0, 0, 0);
+		out->dist = 0;
 	} else {
-		if (d == 0)
-			return false;
 		out->dir = v3_scale(lv, 1 / d);
 		out->dist = d;
 	}
+	return d;
+}
+
+/* The cone of a spotlight or cylinder light at lpos with the given axis,
+ * at pt: 1 inside the radius, 0 outside the falloff; 1 for other lights. */
+static double light_cone(const struct light_rt *L, vec3 lpos, vec3 axis, vec3 pt)
+{
+	vec3 lv = v3_sub(lpos, pt);
 	double atten = 1;
-	if (L->spot && d > 0) {
+	if (L->spot) {
 		/* The angle between the axis and the way from the light to pt. */
-		double c = -v3_dot(lv, L->axis) / d;
+		double d = v3_len(lv);
+		if (d == 0)
+			return 1;
+		double c = -v3_dot(lv, axis) / d;
 		if (c < L->cos_falloff)
-			return false;
+			return 0;
 		if (c < L->cos_radius)
 			atten = smooth((c - L->cos_falloff) / (L->cos_radius - L->cos_falloff));
 		if (L->tightness != 0)
 			atten *= c > 0 ? pow(c, L->tightness) : 0;
 	} else if (L->cylinder) {
-		double along = -v3_dot(lv, L->axis);
+		double along = -v3_dot(lv, axis);
 		if (along < 0)
-			return false;
-		double r = v3_len(v3_madd(lv, L->axis, along));
+			return 0;
+		double r = v3_len(v3_madd(lv, axis, along));
 		if (r >= L->falloff)
-			return false;
+			return 0;
 		if (r > L->radius)
 			atten = smooth((L->falloff - r) / (L->falloff - L->radius));
 		if (L->tightness != 0)
 			atten *= pow(1 - r / L->falloff, L->tightness);
 	}
-	if (L->fade)
-		atten *= 2 / (1 + pow(d / L->fade_distance, L->fade_power));
-	out->atten = atten;
-	return atten > 0;
+	return atten;
 }
 
-vec3 light_target(const struct light_rt *L, vec3 pt, const struct light_ray *lr)
+/* Fading at distance d (light_way's). POV-Ray raises a negative distance
+ * to the power as it is (measured: 0 light at -3 with fade_distance 1,
+ * power 1); where that has no real value, or the light would be negative
+ * or infinite, none is counted. */
+static double light_fade(const struct light_rt *L, double d)
 {
-	return L->along_axis ? v3_madd(pt, lr->dir, lr->dist) : L->pos;
+	if (!L->fade)
+		return 1;
+	double f = 2 / (1 + pow(d / L->fade_distance, L->fade_power));
+	return isfinite(f) && f > 0 ? f : 0;
+}
+
+/* light_at for the light moved to lpos, running along axis. */
+static bool light_from(const struct light_rt *L, vec3 lpos, vec3 axis, vec3 pt, struct light_ray *out)
+{
+	double d = light_way(L, lpos, axis, pt, out);
+	if (!L->along_axis && d == 0)
+		return false;
+	double atten = light_cone(L, lpos, axis, pt);
+	if (atten <= 0)
+		return false;
+	out->atten = atten * light_fade(L, d);
+	return out->atten > 0;
+}
+
+bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out)
+{
+	return light_from(L, L->pos, L->axis, pt, out);
 }
 
 void area_scratch_init(struct area_scratch *a, size_t max_samples)
@@ -227,34 +288,62 @@ struct area_run {
 	struct area_scratch *sc;
 	area_test_fn test;
 	void *ctx;
-	vec3 base;        /* the grid's centre: pos, or the point on the light's plane */
+	vec3 base;        /* the grid's centre: the light's location */
+	vec3 pt;          /* the point lit */
 	vec3 a1, a2;      /* the (oriented) edge vectors */
 	uint32_t hx, hy;  /* the point's hash, for jitter */
 };
 
-/* The result of sample (i, j), tested once per point. */
-static rgb area_sample(struct area_run *r, int i, int j)
+/* Where sample (i, j) of the grid lies for this point. */
+static vec3 area_point(const struct area_run *r, int i, int j)
 {
 	const struct light_rt *L = r->L;
-	size_t k = (size_t)j * (size_t)L->n1 + (size_t)i;
-	if (r->sc->stamp[k] == r->sc->now)
-		return r->sc->val[k];
+	uint32_t k = (uint32_t)j * (uint32_t)L->n1 + (uint32_t)i;
 	double u = L->n1 > 1 ? 2.0 * i / (L->n1 - 1) - 1 : 0;
 	double v = L->n2 > 1 ? 2.0 * j / (L->n2 - 1) - 1 : 0;
 	if (L->jitter) {
 		/* Anywhere in the sample's cell. */
 		if (L->n1 > 1)
-			u += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_U) - 0.5) * 2.0 / (L->n1 - 1);
+			u += (hash_uniform(r->hx, r->hy, k, PURPOSE_JITTER_U) - 0.5) * 2.0 / (L->n1 - 1);
 		if (L->n2 > 1)
-			v += (hash_uniform(r->hx, r->hy, (uint32_t)k, PURPOSE_JITTER_V) - 0.5) * 2.0 / (L->n2 - 1);
+			v += (hash_uniform(r->hx, r->hy, k, PURPOSE_JITTER_V) - 0.5) * 2.0 / (L->n2 - 1);
 	}
 	if (L->circular && (u != 0 || v != 0)) {
 		double m = fmax(fabs(u), fabs(v)) / sqrt(u * u + v * v);
 		u *= m;
 		v *= m;
 	}
-	vec3 target = v3_madd(v3_madd(r->base, r->a1, u / 2), r->a2, v / 2);
-	rgb c = r->test(r->ctx, target, i);
+	return v3_madd(v3_madd(r->base, r->a1, u / 2), r->a2, v / 2);
+}
+
+/* A parallel or cylinder light's grid point q is a light of its own along
+ * q -> point_at (POV-Ray 3.7, measured: the penumbra narrows as point_at
+ * moves away, and each point's shadows stop at the plane through it across
+ * its direction): its unit direction toward q. */
+static vec3 axis_of(const struct light_rt *L, vec3 q)
+{
+	vec3 d = v3_sub(L->l->point_at, q);
+	double n = v3_len(d);
+	return n > 0 ? v3_scale(d, 1 / n) : L->axis;
+}
+
+/* The target of the shadow test of such a grid point q from pt: where the
+ * way toward it leaves its plane; pt itself when pt is beyond the plane. */
+static vec3 axis_target(const struct light_rt *L, vec3 q, vec3 pt)
+{
+	vec3 d = v3_neg(axis_of(L, q));
+	double h = v3_dot(v3_sub(q, pt), d);
+	return h > 0 ? v3_madd(pt, d, h) : pt;
+}
+
+/* The result of sample (i, j), tested once per point. */
+static rgb area_sample(struct area_run *r, int i, int j)
+{
+	size_t k = (size_t)j * (size_t)r->L->n1 + (size_t)i;
+	if (r->sc->stamp[k] == r->sc->now)
+		return r->sc->val[k];
+	vec3 q = area_point(r, i, j);
+	rgb c = r->test(r->ctx, r->L->along_axis ? axis_target(r->L, q, r->pt) : q, i);
 	r->sc->val[k] = c;
 	r->sc->stamp[k] = r->sc->now;
 	return c;
@@ -307,11 +396,15 @@ static uint32_t point_hash(vec3 p, int which)
 	return (uint32_t)(h >> 32);
 }
 
-rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
-               area_test_fn test, void *ctx)
+/* Set up r for area light L seen from pt: the grid's centre and axes
+ * (turned to face pt with orient) and the point's hash for jitter. */
+static void area_run_init(struct area_run *r, const struct light_rt *L, vec3 pt)
 {
-	struct area_run r = {.L = L, .sc = sc, .test = test, .ctx = ctx, .a1 = L->axis1, .a2 = L->axis2};
-	r.base = light_target(L, pt, lr);
+	r->L = L;
+	r->a1 = L->axis1;
+	r->a2 = L->axis2;
+	r->base = L->pos;
+	r->pt = pt;
 	if (L->orient) {
 		/* Face the point: the axes across the way from the light to it. */
 		vec3 d = v3_norm(v3_sub(pt, L->pos));
@@ -321,18 +414,53 @@ rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, st
 		if (al > 0) {
 			a = v3_scale(a, 1 / al);
 			vec3 b = v3_norm(v3_cross(d, a));
-			r.a1 = v3_scale(a, L->len1);
-			r.a2 = v3_scale(b, L->len2);
+			r->a1 = v3_scale(a, L->len1);
+			r->a2 = v3_scale(b, L->len2);
 		}
 	}
 	if (L->jitter) {
-		r.hx = point_hash(pt, 0);
-		r.hy = point_hash(pt, 1);
+		r->hx = point_hash(pt, 0);
+		r->hy = point_hash(pt, 1);
 	}
+}
+
+rgb light_area(const struct light_rt *L, vec3 pt, struct area_scratch *sc,
+               area_test_fn test, void *ctx)
+{
+	struct area_run r = {.sc = sc, .test = test, .ctx = ctx};
+	area_run_init(&r, L, pt);
 	if (++sc->now == 0) {
 		/* The stamps wrapped around: forget them all. */
 		memset(sc->stamp, 0, sc->n * sizeof *sc->stamp);
 		sc->now = 1;
 	}
 	return area_block(&r, 0, 0, L->n1 - 1, L->n2 - 1, 0);
+}
+
+bool light_area_points(const struct light_rt *L, vec3 pt, struct light_point *out)
+{
+	struct area_run r = {0};
+	area_run_init(&r, L, pt);
+	/* Each point is the light moved there, with its own fading; a
+	 * spotlight's cone moves with it, its axis kept; a parallel or cylinder
+	 * light's points run toward point_at, and a cylinder keeps the
+	 * centre's cylinder (measured on POV-Ray 3.7). */
+	double cyl = L->cylinder ? light_cone(L, L->pos, L->axis, pt) : 0;
+	bool any = false;
+	for (int j = 0; j < L->n2; j++)
+		for (int i = 0; i < L->n1; i++) {
+			struct light_ray q;
+			struct light_point *o = &out[(size_t)j * (size_t)L->n1 + (size_t)i];
+			vec3 at = area_point(&r, i, j);
+			if (L->cylinder) {
+				double d = light_way(L, at, axis_of(L, at), pt, &q);
+				q.atten = cyl * light_fade(L, d);
+			} else {
+				light_from(L, at, L->along_axis ? axis_of(L, at) : L->axis, pt, &q);
+			}
+			o->dir = q.dir;
+			o->atten = q.atten;
+			any |= q.atten > 0;
+		}
+	return any;
 }

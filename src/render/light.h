@@ -33,6 +33,13 @@ struct light_rt {
 	double len1, len2;    /* their lengths, for orient */
 	const struct object *projector; /* projected_through, or NULL */
 	size_t slot;          /* its first last-blocker slot (one per grid column of an area light) */
+	/* area_illumination (an area light, with or without shadows): the
+	 * diffuse and highlights are the mean over the n1 x n2 points of the
+	 * grid, each lighting from its own direction with its own cone and
+	 * fading; illum_off is the light's first entry in the tracer's table
+	 * of light_point. */
+	bool illum;
+	size_t illum_off;
 };
 
 /* The lights of a scene, and for each light group the lights that reach
@@ -45,12 +52,19 @@ struct light_set {
 	size_t ngroups;
 	size_t slots;         /* last-blocker slots in all */
 	size_t max_samples;   /* the largest area grid */
+	size_t illum_points;  /* the grid points of all area_illumination lights */
 };
 
 /* The lights of p's scene as the tracer uses them (p->features decides
  * which effects are computed). Free with light_set_free. */
 struct light_set *light_set_new(const struct prepared *p);
 void light_set_free(struct light_set *s);
+
+/* One point of an area_illumination grid seen from a point. */
+struct light_point {
+	vec3 dir;       /* unit, toward it */
+	double atten;   /* its cone and fading; 0: no light from it */
+};
 
 /* A light seen from a point. */
 struct light_ray {
@@ -60,7 +74,8 @@ struct light_ray {
 };
 
 /* The light L at point pt; false when none arrives there (outside a cone,
- * behind a cylinder light, at the light itself). */
+ * behind a cylinder light: atten is then 0, dir and dist are set; at the
+ * light itself: dir is 0 too). */
 bool light_at(const struct light_rt *L, vec3 pt, struct light_ray *out);
 
 /* Per-thread scratch for area lights: each sample's result once per point. */
@@ -75,21 +90,23 @@ void area_scratch_free(struct area_scratch *a);
 
 /* The shadow test of one sample: the light arriving at the point from
  * `target` (a point on the light, or, for light along an axis, the point
- * where the sample's ray leaves the light's plane). `column` picks the
+ * where the way toward the sample leaves the sample's plane). `column` picks the
  * last-blocker slot. */
 typedef rgb (*area_test_fn)(void *ctx, vec3 target, int column);
 
-/* The light of area light L arriving at pt (whose light ray is lr), as
- * POV-Ray computes it: corners of the grid first, blocks subdivided where
+/* The light of area light L arriving at pt, as POV-Ray computes it: corners of the grid first, blocks subdivided where
  * their corners differ by more than 0.1 (sum over the channels) or while
  * the level is below `adaptive`, each block the mean of its halves. Jitter
  * comes from a hash of pt and the sample, so the result does not depend
  * on threads or order. */
-rgb light_area(const struct light_rt *L, vec3 pt, const struct light_ray *lr, struct area_scratch *sc,
+rgb light_area(const struct light_rt *L, vec3 pt, struct area_scratch *sc,
                area_test_fn test, void *ctx);
 
-/* The target of the single sample of a light that is not an area: the
- * light's position, or for light along an axis the point on its plane. */
-vec3 light_target(const struct light_rt *L, vec3 pt, const struct light_ray *lr);
+/* The n1 x n2 points of area light L seen from pt, placed where
+ * light_area's samples lie (orient, circular and jitter applied), each
+ * with the direction and attenuation area_illumination lights pt with
+ * from it (see light.c): point (i, j) goes to out[j * n1 + i]. False when
+ * no light arrives from any of them. */
+bool light_area_points(const struct light_rt *L, vec3 pt, struct light_point *out);
 
 #endif

@@ -151,7 +151,7 @@ static unsigned object_features(struct object *o, bool *caster)
 unsigned prepare_features(const struct scene *s)
 {
 	unsigned f = 0;
-	bool shadow_light = false, caster = false, area_light = false;
+	bool shadow_light = false, caster = false, area_light = false, illum_light = false;
 	for (size_t i = 0; i < s->nlights; i++) {
 		const struct light *l = &s->lights[i];
 		if (!l->shadowless)
@@ -159,6 +159,9 @@ unsigned prepare_features(const struct scene *s)
 		/* Only the shadows of an area light differ from a point light's. */
 		if (!l->shadowless && l->area && l->size1 * l->size2 > 1)
 			area_light = true;
+		/* area_illumination shades from the grid, shadows or not. */
+		if (l->area && l->size1 * l->size2 > 1 && l->area_illumination)
+			illum_light = true;
 		if (l->kind != LIGHT_POINT)
 			f |= FEAT_SPOTLIGHTS;
 		if (l->fade_distance > 0 && l->fade_power > 0)
@@ -177,6 +180,8 @@ unsigned prepare_features(const struct scene *s)
 		if (area_light)
 			f |= FEAT_AREA_LIGHTS;
 	}
+	if (illum_light)
+		f |= FEAT_AREA_LIGHTS;
 	for (size_t i = 0; i < s->atmos.nfogs; i++)
 		if (s->atmos.fogs[i].distance > 0)
 			f |= FEAT_FOG;

@@ -26,7 +26,7 @@ enum feature {
 	FEAT_FRESNEL = 1 << 11,   /* some reflection block uses fresnel */
 	FEAT_LAYERS = 1 << 12,    /* layered, patterned or material-mapped textures */
 	FEAT_UV = 1 << 13,        /* some pattern is uv-mapped */
-	FEAT_AREA_LIGHTS = 1 << 14, /* some shadow-casting light is an area light */
+	FEAT_AREA_LIGHTS = 1 << 14, /* some shadow-casting light is an area light, or any has area_illumination */
 	FEAT_SPOTLIGHTS = 1 << 15,  /* some light is a spotlight or cylinder (cones) */
 	FEAT_LIGHT_FADE = 1 << 16,  /* some light fades with distance */
 	FEAT_FOCAL_BLUR = 1 << 17,  /* the camera has an aperture */

@@ -41,12 +41,13 @@ enum { TILE = RENDER_BLOCK };
 /* Hash purposes of the jitter offsets. */
 enum { JITTER_X = 0x4a495458u, JITTER_Y = 0x4a495459u };
 
-/* One sample, or the mean of several: its colour, coverage (the share of
- * it that saw an object, for the alpha channel) and comparison values. */
+/* One sample, or the mean of several: its colour, coverage (1 - the
+ * share of the background seen through it, for the alpha channel) and
+ * comparison values. */
 struct smp {
 	rgb c;
 	double alpha;
-	double g[3];   /* c^aa_exponent per channel */
+	double g[4];   /* c^aa_exponent per channel; with +UA the transmit (else 0) */
 	bool super;    /* method 1: already supersampled */
 };
 
@@ -84,6 +85,7 @@ static void set_compare(const struct render_opts *o, struct smp *s)
 	double e = o->aa_exponent, ch[3] = {s->c.r, s->c.g, s->c.b};
 	for (int k = 0; k < 3; k++)
 		s->g[k] = e == 1 ? ch[k] : pow(fmax(ch[k], 0), e);
+	s->g[3] = o->alpha ? 1 - s->alpha : 0;
 }
 
 /* The sample at image position (x, y), for sample `sample` of pixel
@@ -92,8 +94,12 @@ static struct smp take(struct worker *w, double x, double y, int px, int py, uin
 {
 	const struct render_opts *o = w->job->o;
 	bool any;
+	w->tr.camera_transmit = 0;
+	w->tr.camera_rays = 0;
 	struct smp s = {.c = camera_sample(&w->tr, x, y, o->width, o->height, px, py, sample, &any)};
-	s.alpha = any ? 1 : 0;
+	/* The mean transmit of the camera's rays; where the camera has no ray
+	 * (outside a fisheye's circle) the pixel is transparent, as in POV-Ray. */
+	s.alpha = w->tr.camera_rays ? 1 - w->tr.camera_transmit / w->tr.camera_rays : 0;
 	if (o->aa_method)
 		set_compare(o, &s);
 	w->tr.stats.samples++;
@@ -102,7 +108,7 @@ static struct smp take(struct worker *w, double x, double y, int px, int py, uin
 
 static double difference(const double *a, const double *b)
 {
-	return fabs(a[0] - b[0]) + fabs(a[1] - b[1]) + fabs(a[2] - b[2]);
+	return fabs(a[0] - b[0]) + fabs(a[1] - b[1]) + fabs(a[2] - b[2]) + fabs(a[3] - b[3]);
 }
 
 static void put(struct job *j, int x, int y, const struct smp *s)
@@ -111,8 +117,12 @@ static void put(struct job *j, int x, int y, const struct smp *s)
 	px[0] = (float)s->c.r;
 	px[1] = (float)s->c.g;
 	px[2] = (float)s->c.b;
-	/* With +UA the background is transparent, as in POV-Ray. */
-	px[3] = (float)s->alpha;
+	/* With +UA the background is transparent, as in POV-Ray: alpha is
+	 * 1 - transmit, but never below the grey of the colour (measured: a
+	 * highlight on a clear surface makes it as opaque as it is bright). The
+	 * colour is what shows over black (associated alpha). */
+	double a = fmax(s->alpha, 0.297 * s->c.r + 0.589 * s->c.g + 0.114 * s->c.b);
+	px[3] = (float)(a < 0 ? 0 : a > 1 ? 1 : a);
 }
 
 /* A jitter offset in (-amount/2, amount/2) of a cell `cell` wide. */
@@ -165,7 +175,7 @@ static void tile_method1(struct worker *w, int x0, int y0, int x1, int y1)
 	for (int y = y0; y < y1; y++)
 		for (int x = x0; x < x1; x++) {
 			struct smp *s = &cells[(y - ey0) * stride + (x - ex0)];
-			double g[3] = {s->g[0], s->g[1], s->g[2]};
+			double g[4] = {s->g[0], s->g[1], s->g[2], s->g[3]};
 			/* The neighbours' current colours (supersampled or not)
 			 * against this pixel's centre sample. A neighbour outside
 			 * the block is never supersampled: its block is done. */

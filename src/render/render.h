@@ -25,6 +25,7 @@ struct render_opts {
 	int aa_depth;        /* 1 to 9: method 1 takes depth x depth more samples, method 2 subdivides depth-1 times */
 	double jitter;       /* 0: none; up to 1: samples move within their cell */
 	double aa_exponent;  /* colours are compared raised to this power (working gamma / +AG) */
+	bool alpha;          /* +UA: the comparison counts the transmit channel too */
 	/* Set (by a signal handler) to ask the render to stop; may be NULL. */
 	volatile sig_atomic_t *stop;
 };

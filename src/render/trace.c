@@ -18,6 +18,8 @@ struct lit {
 	bool back;   /* the light is behind the face the ray sees */
 	bool on;     /* lights the surface at all */
 	bool highlights; /* makes highlights (shadowless lights make none) */
+	const struct light_point *pts; /* area_illumination: the grid's points; NULL: dir alone */
+	size_t npts;
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p)
@@ -28,7 +30,8 @@ void tracer_init(struct tracer *tr, const struct prepared *p)
 	size_t n = p->scene->nlights ? p->scene->nlights : 1;
 	tr->last_blocker = calloc(tr->lights->slots ? tr->lights->slots : 1, sizeof *tr->last_blocker);
 	tr->lit = calloc(n, sizeof *tr->lit);
-	if (!tr->last_blocker || !tr->lit) abort();
+	tr->illum = malloc((tr->lights->illum_points ? tr->lights->illum_points : 1) * sizeof *tr->illum);
+	if (!tr->last_blocker || !tr->lit || !tr->illum) abort();
 	area_scratch_init(&tr->area, tr->lights->max_samples);
 }
 
@@ -36,10 +39,12 @@ void tracer_free(struct tracer *tr)
 {
 	free(tr->last_blocker);
 	free(tr->lit);
+	free(tr->illum);
 	light_set_free(tr->lights);
 	area_scratch_free(&tr->area);
 	tr->last_blocker = NULL;
 	tr->lit = NULL;
+	tr->illum = NULL;
 	tr->lights = NULL;
 }
 
@@ -218,6 +223,13 @@ static const struct texture *plain_of(const struct texture *t, const struct surf
 	return t;
 }
 
+/* POV-Ray's grey of a colour (its weights for the transmit channel that
+ * a filtering surface passes on, measured with +UA). */
+static double gray_of(rgb c)
+{
+	return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+}
+
 /* What a plain layer lets through: filter * colour + transmit. */
 static rgb layer_filter(struct rgbft c)
 {
@@ -367,24 +379,43 @@ static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_
 		struct lit *l = &tr->lit[li];
 		l->on = false;
 		struct light_ray lr;
-		if (!light_at(L, s->pt, &lr))
+		/* An area_illumination light lights from its grid's points, whose
+		 * cones are their own: its centre may be outside its cone. */
+		if (!light_at(L, s->pt, &lr) && !(L->illum && v3_dot(lr.dir, lr.dir) > 0))
 			continue;
 		l->dir = lr.dir;
 		double c = v3_dot(s->n, l->dir);
 		if (c == 0)
 			continue;
 		l->back = c < 0;
-		if (l->back && !back_wanted)
-			continue;
+		if (l->back && !back_wanted) {
+			/* Part of an area_illumination grid may still be in front
+			 * (POV-Ray lights from those points, measured). */
+			if (!L->illum)
+				continue;
+			l->back = false;
+		}
 		l->highlights = L->highlights;
+		l->pts = NULL;
+		l->npts = 0;
 		vec3 side = l->back ? v3_neg(s->n) : s->n;
 		vec3 from = v3_madd(s->pt, side, s->eps);
+		if (L->illum) {
+			/* The cones and fading are those of each grid point
+			 * (applied in the shading); the shadows are the grid's. */
+			struct light_point *pts = tr->illum + L->illum_off;
+			if (!light_area_points(L, from, pts))
+				continue;
+			l->pts = pts;
+			l->npts = (size_t)L->n1 * (size_t)L->n2;
+			lr.atten = 1;
+		}
 		rgb lc = lr.atten == 1 ? L->color : rgb_scale(L->color, lr.atten);
 		l->color = lc;
 		if (L->shadows && lr.dist > 0) {
 			if (L->area) {
 				struct shadow_ctx ctx = {tr, L, from, s->eps, s->med, lc};
-				l->color = light_area(L, from, &lr, &tr->area, area_test, &ctx);
+				l->color = light_area(L, from, &tr->area, area_test, &ctx);
 			} else {
 				double d = lr.dist;
 				if (!L->projector || (d = projected_dist(L, from, lr.dir, d)) >= 0)
@@ -518,6 +549,51 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 	return trace_ray_in(tr, &r, n1 == n2 ? s->depth : s->depth + 1, RAY_REFRACTED, weight, after, &any);
 }
 
+/* The diffuse light and highlights of layer y at s from a light lt
+ * arriving along the unit direction ldir, n being the layer's normal on
+ * the side the light is (dbl: the object has double_illuminate), before
+ * the light's colour: zero when ldir is behind n. */
+static rgb light_terms(unsigned feat, const struct layer *y, const struct surface *s, vec3 n, vec3 ldir,
+                       const struct lit *lt, bool dbl)
+{
+	const struct finish *f = y->fin;
+	double cosl = v3_dot(n, ldir);
+	rgb acc = rgb_make(0, 0, 0);
+	if (cosl <= 0)
+		return acc;
+	double kd = lt->back && !dbl ? f->diffuse_back : f->diffuse;
+	if (kd != 0) {
+		double k = kd * (f->brilliance == 1.0 ? cosl : pow(cosl, f->brilliance));
+		if (f->crand > 0)
+			k -= f->crand * hash_uniform((uint32_t)(s->pt.x * 1e4), (uint32_t)(s->pt.y * 1e4),
+			                             (uint32_t)(s->pt.z * 1e4), 7) * kd;
+		rgb d = rgb_scale(y->pig, k * y->opacity);
+		if ((feat & FEAT_IRID) && f->irid != 0) {
+			double cv = fabs(v3_dot(s->dir, n));
+			rgb ir = shade_irid(f->irid, f->irid_thickness, (cosl + cv) / 2, rgb_make(0.70, 0.52, 0.48));
+			d = rgb_mul(d, rgb_make(1 + ir.r, 1 + ir.g, 1 + ir.b));
+		}
+		acc = rgb_add(acc, d);
+	}
+	if (!lt->back && lt->highlights) {
+		if ((feat & FEAT_PHONG) && f->phong > 0) {
+			double c = v3_dot(v3_reflect(s->dir, n), ldir);
+			if (c > 0) {
+				rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+				acc = rgb_add(acc, rgb_scale(hc, f->phong * pow(c, f->phong_size)));
+			}
+		}
+		if ((feat & FEAT_SPECULAR) && f->specular > 0) {
+			double c = v3_dot(n, v3_norm(v3_sub(ldir, s->dir)));
+			if (c > 0) {
+				rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
+				acc = rgb_add(acc, rgb_scale(hc, f->specular * pow(c, 1.0 / f->roughness)));
+			}
+		}
+	}
+	return acc;
+}
+
 /* The colour of the plain-texture stack t (t, t->next, ...) at s: each
  * layer's ambient, emission and diffuse light scaled by its opacity, its
  * highlights whole, both filtered by the layers above; the reflections of
@@ -530,6 +606,9 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	struct layer L[MAX_LAYERS];
 	int nl = 0;
 	rgb filt = rgb_make(1, 1, 1);
+	/* The share of the background the layers let through: the product
+	 * of the grey of each layer's filter (measured with +UA). */
+	double tpass = 1;
 	bool back_wanted = (s->obj->flags & OBJ_DOUBLE_ILLUMINATE) != 0;
 	struct medium after = {0};
 	double n_rel = 1;
@@ -559,6 +638,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		if (y->fin->conserve_energy)
 			lf = rgb_mul(lf, rgb_make(1 - y->refl.r, 1 - y->refl.g, 1 - y->refl.b));
 		filt = rgb_mul(filt, lf);
+		tpass *= gray_of(lf);
 		if (rgb_max(filt) <= 0 || pl != l)
 			break;
 	}
@@ -566,6 +646,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	 * pigments' colours as they are: each layer through the transparency
 	 * of those above it, the last one whole (measured: a clear glass
 	 * shows its colour, a clear top layer the one below). */
+	tr->transmit = 0; /* until a transmitted ray says otherwise */
 	if (p->quality < 2) {
 		rgb c = rgb_make(0, 0, 0);
 		for (int i = 0; i < nl; i++)
@@ -588,41 +669,18 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				continue;
 			for (int i = 0; i < nl; i++) {
 				const struct layer *y = &L[i];
-				const struct finish *f = y->fin;
 				vec3 n = lt->back ? v3_neg(y->n) : y->n;
-				double cosl = v3_dot(n, lt->dir);
-				if (cosl <= 0)
-					continue;
-				rgb acc = rgb_make(0, 0, 0);
-				double kd = lt->back && !dbl ? f->diffuse_back : f->diffuse;
-				if (kd != 0) {
-					double k = kd * (f->brilliance == 1.0 ? cosl : pow(cosl, f->brilliance));
-					if (f->crand > 0)
-						k -= f->crand * hash_uniform((uint32_t)(s->pt.x * 1e4), (uint32_t)(s->pt.y * 1e4),
-						                             (uint32_t)(s->pt.z * 1e4), 7) * kd;
-					rgb d = rgb_scale(y->pig, k * y->opacity);
-					if ((feat & FEAT_IRID) && f->irid != 0) {
-						double cv = fabs(v3_dot(s->dir, n));
-						rgb ir = shade_irid(f->irid, f->irid_thickness, (cosl + cv) / 2, rgb_make(0.70, 0.52, 0.48));
-						d = rgb_mul(d, rgb_make(1 + ir.r, 1 + ir.g, 1 + ir.b));
-					}
-					acc = rgb_add(acc, d);
-				}
-				if (!lt->back && lt->highlights) {
-					if ((feat & FEAT_PHONG) && f->phong > 0) {
-						double c = v3_dot(v3_reflect(s->dir, n), lt->dir);
-						if (c > 0) {
-							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
-							acc = rgb_add(acc, rgb_scale(hc, f->phong * pow(c, f->phong_size)));
-						}
-					}
-					if ((feat & FEAT_SPECULAR) && f->specular > 0) {
-						double c = v3_dot(n, v3_norm(v3_sub(lt->dir, s->dir)));
-						if (c > 0) {
-							rgb hc = f->metallic > 0 ? shade_metallic(y->pig, f->metallic, cosl) : rgb_make(1, 1, 1);
-							acc = rgb_add(acc, rgb_scale(hc, f->specular * pow(c, 1.0 / f->roughness)));
-						}
-					}
+				rgb acc;
+				if (!lt->pts) {
+					acc = light_terms(feat, y, s, n, lt->dir, lt, dbl);
+				} else {
+					/* area_illumination: the mean over the grid's points. */
+					acc = rgb_make(0, 0, 0);
+					for (size_t k = 0; k < lt->npts; k++)
+						if (lt->pts[k].atten > 0)
+							acc = rgb_add(acc, rgb_scale(light_terms(feat, y, s, n, lt->pts[k].dir, lt, dbl),
+							                             lt->pts[k].atten));
+					acc = rgb_scale(acc, 1.0 / (double)lt->npts);
 				}
 				col = rgb_add(col, rgb_mul(y->above, rgb_mul(acc, lt->color)));
 			}
@@ -647,6 +705,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			struct ray r = {v3_madd(s->pt, L[0].n, s->eps), v3_reflect(s->dir, L[0].n)};
 			bool any;
 			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight * rgb_max(filt), s->med, &any);
+			tr->transmit = 0; /* a reflected ray passes nothing on */
 			return rgb_add(col, rgb_mul(c, exit_fade(p, s)));
 		}
 		for (int i = 0; i < nl; i++) {
@@ -664,10 +723,15 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 				rc = rgb_make(pow(fmax(rc.r, 0), 1 / e), pow(fmax(rc.g, 0), 1 / e), pow(fmax(rc.b, 0), 1 / e));
 			col = rgb_add(col, rgb_mul(rc, y->refl));
 		}
+		double through = 0;
 		if (transmits) {
 			rgb c = transmit(tr, s, L[0].n, weight * rgb_max(filt), &after);
 			col = rgb_add(col, rgb_mul(rgb_mul(filt, c), exit_fade(p, s)));
+			through = tpass * tr->transmit;
 		}
+		/* What no transmitted ray reaches is opaque (measured: below
+		 * adc_bailout or at max_trace_level the alpha is 1). */
+		tr->transmit = through;
 	}
 	return col;
 }
@@ -677,8 +741,10 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
  * does); material maps take the entry the image's palette index names. */
 static rgb shade_texture(struct tracer *tr, const struct texture *t, const struct surface *s, double weight)
 {
-	if (!t)
+	if (!t) {
+		tr->transmit = 0;
 		return rgb_make(0, 0, 0);
+	}
 	if (t->kind == TEX_PLAIN || !t->map || t->map->n == 0)
 		return shade_layers(tr, t, s, weight);
 	const struct blend_map *m = t->map;
@@ -701,7 +767,9 @@ static rgb shade_texture(struct tracer *tr, const struct texture *t, const struc
 	if (w >= 1)
 		return shade_texture(tr, m->e[hi].item, s, weight);
 	rgb a = shade_texture(tr, m->e[lo].item, s, weight * (1 - w));
+	double ta = tr->transmit;
 	rgb b = shade_texture(tr, m->e[hi].item, s, weight * w);
+	tr->transmit = ta * (1 - w) + tr->transmit * w;
 	return rgb_add(rgb_scale(a, 1 - w), rgb_scale(b, w));
 }
 
@@ -717,14 +785,15 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		struct rgbft bg = atmos_escape(p, dir);
 		if (p->features & (FEAT_FOG | FEAT_RAINBOW))
 			bg = atmos_apply(p, r->org, dir, ATMOS_MISS_DEPTH, bg);
-		/* The pixel counts as opaque when less than half of it is
-		 * see-through (POV-Ray's alpha is 1 - bg.t). */
-		*hit_anything = bg.t < 0.5;
+		*hit_anything = false;
+		tr->transmit = bg.t;
 		return rgb_of(bg);
 	}
 	*hit_anything = true;
-	if (p->signature)
+	if (p->signature) {
+		tr->transmit = 0;
 		return signature_color(h.obj->id);
+	}
 	struct surface s = {.obj = h.obj, .med = med, .depth = depth, .dist = h.t * v3_len(r->dir)};
 	s.dir = v3_norm(r->dir);
 	s.pt = v3_madd(r->org, r->dir, h.t);
@@ -745,8 +814,10 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
 	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
 		double len = v3_len(r->dir);
-		struct rgbft c = {col.r, col.g, col.b, 0, 0};
-		col = rgb_of(atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c));
+		struct rgbft c = {col.r, col.g, col.b, 0, tr->transmit};
+		c = atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c);
+		col = rgb_of(c);
+		tr->transmit = c.t;
 	}
 	return col;
 }
@@ -754,5 +825,8 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)
 {
 	const struct medium *m = tr->p->camera_medium.n ? &tr->p->camera_medium : NULL;
-	return trace_ray_in(tr, r, depth, kind, 1.0, m, hit_anything);
+	rgb c = trace_ray_in(tr, r, depth, kind, 1.0, m, hit_anything);
+	tr->camera_transmit += tr->transmit;
+	tr->camera_rays++;
+	return c;
 }

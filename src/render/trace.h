@@ -20,6 +20,16 @@ struct tracer {
 	struct lit *lit;                     /* per light: scratch for one surface's lighting */
 	struct light_set *lights;            /* the lights as sampled, and who sees which */
 	struct area_scratch area;            /* area-light samples of the point being lit */
+	struct light_point *illum;           /* area_illumination: each grid point as seen from the
+	                                      * point being lit (at the light's illum_off) */
+	/* The share of the background seen through what the last
+	 * trace_ray_in call saw (POV-Ray's transmit channel: 1 where the
+	 * background shows, 0 on an opaque object), and its sum over the
+	 * trace_ray calls since the caller last cleared it, for the alpha
+	 * channel: a pixel's alpha is 1 - camera_transmit / camera_rays. */
+	double transmit;
+	double camera_transmit;
+	int camera_rays;
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);
@@ -31,11 +41,12 @@ bool trace_closest(const struct prepared *p, const struct ray *r, double tmin, d
 
 /* The colour seen along r (direction need not be unit). `depth` counts the
  * bounces so far (camera rays: 1). *hit_anything tells if an object (not
- * the background) was seen, for the alpha channel. */
+ * the background) was seen. Adds the ray's transmit to tr->camera_transmit
+ * and counts it in tr->camera_rays. */
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything);
 /* The same for a secondary ray: `weight` is how much its colour can still
  * change the pixel (rays below adc_bailout are not traced by the caller),
- * `med` the interiors it travels in (NULL: none). */
+ * `med` the interiors it travels in (NULL: none). Sets tr->transmit. */
 rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, double weight,
                  const struct medium *med, bool *hit_anything);
 

@@ -30,12 +30,14 @@ struct light {
 	 * that direction. */
 	bool parallel;
 	/* area_light: a grid of size1 x size2 lights spanning axis1, axis2
-	 * around pos (shadows only; the shading uses pos). */
+	 * around pos (shadows only; the shading uses pos, unless
+	 * area_illumination). */
 	bool area;
 	vec3 axis1, axis2;
 	int size1, size2;
 	int adaptive;        /* adaptive level; -1: every sample is tested */
 	bool jitter, circular, orient;
+	bool area_illumination; /* diffuse and highlights averaged over the grid's points */
 	/* fade_distance/fade_power: light is scaled by
 	 * 2 / (1 + (d / fade_distance)^fade_power) when both are > 0. */
 	double fade_distance, fade_power;

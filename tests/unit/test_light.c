@@ -58,6 +58,9 @@ static void test_features(void **state)
 		/* a 1x1 area light is a point light; a shadowless one casts no soft shadows */
 		{"light_source { <0,5,0>, rgb 1 area_light x, z, 1, 1 }", FEAT_SHADOWS | FEAT_PHONG},
 		{"light_source { <0,5,0>, rgb 1 area_light x, z, 3, 3 shadowless }", 0},
+		/* area_illumination shades from the grid even without shadows */
+		{"light_source { <0,5,0>, rgb 1 area_light x, z, 3, 3 shadowless area_illumination }", FEAT_AREA_LIGHTS},
+		{"light_source { <0,5,0>, rgb 1 area_light x, z, 3, 3 shadowless area_illumination off }", 0},
 		{"light_source { <0,5,0>, rgb 1 spotlight point_at 0 }", FEAT_SHADOWS | FEAT_SPOTLIGHTS | FEAT_PHONG},
 		{"light_source { <0,5,0>, rgb 1 cylinder point_at 0 }", FEAT_SHADOWS | FEAT_SPOTLIGHTS | FEAT_PHONG},
 		{"light_source { <0,5,0>, rgb 1 parallel point_at 0 }", FEAT_SHADOWS | FEAT_PHONG},
@@ -161,6 +164,70 @@ static void test_cylinder_and_fade(void **state)
 	lit_close(&t);
 }
 
+/* Fading of parallel lights: by the signed distance to the light's plane
+ * (POV-Ray 3.7, a white plane y = 0 under a parallel light with
+ * fade_distance 1: constant over the plane, 0.66667 at height 2 with power
+ * 1, 0.4 with power 2, and no light 3 units behind the plane). */
+static void test_parallel_fade(void **state)
+{
+	(void)state;
+	struct lit_scene t;
+	lit_open(&t, "#version 3.7;\nplane { y, 0 }\n"
+	             "light_source { <1,2,0>, rgb 1 parallel point_at <1,1,0> fade_distance 1 fade_power 1 }\n"
+	             "light_source { <1,2,0>, rgb 1 parallel point_at <1,1,0> fade_distance 1 fade_power 2 }\n"
+	             "light_source { <1,-3,0>, rgb 1 parallel point_at <1,-4,0> fade_distance 1 fade_power 1 }\n"
+	             "light_source { <1,2,0>, rgb 1 cylinder radius 9 falloff 10 point_at <1,1,0> "
+	             "fade_distance 1 fade_power 1 }\n");
+	struct light_ray lr;
+	for (double x = -3; x <= 3; x += 1.5) {
+		assert_true(light_at(&t.ls->v[0], v3(x, 0, 0.5), &lr));
+		assert_float_equal(lr.atten, 2.0 / 3, 1e-12);
+		assert_true(light_at(&t.ls->v[1], v3(x, 0, 0.5), &lr));
+		assert_float_equal(lr.atten, 0.4, 1e-12);
+		assert_false(light_at(&t.ls->v[2], v3(x, 0, 0.5), &lr));
+		assert_true(light_at(&t.ls->v[3], v3(x, 0, 0.5), &lr));
+		assert_float_equal(lr.atten, 2.0 / 3, 1e-12);
+	}
+	lit_close(&t);
+}
+
+/* area_illumination: the light on a white diffuse plane y = 0 under a
+ * 5 x 1 area light at height 1 is the mean over its points of each one's
+ * cosine times its cone and fading. POV-Ray 3.7's values (16-bit linear
+ * PNG, File_Gamma 1) at x = 0.25, 1.25, 2.25, 2.75; the second light is
+ * an area spotlight (radius 20, falloff 40, point_at the origin: its cone
+ * moves with each point), the third fades (distance 1, power 2). */
+static void test_area_illumination(void **state)
+{
+	(void)state;
+	struct lit_scene t;
+	lit_open(&t, "#version 3.7;\nplane { y, 0 }\n"
+	             "light_source { <0,1,0>, rgb 1 area_light <4,0,0>, <0,0,1>, 5, 1 area_illumination }\n"
+	             "light_source { <0,1,0>, rgb 1 area_light <4,0,0>, <0,0,1>, 5, 1 area_illumination "
+	             "spotlight radius 20 falloff 40 point_at <0,0,0> }\n"
+	             "light_source { <0,1,0>, rgb 1 area_light <4,0,0>, <0,0,1>, 5, 1 area_illumination "
+	             "fade_distance 1 fade_power 2 }\n");
+	static const double xs[4] = {0.25, 1.25, 2.25, 2.75};
+	static const double want[3][4] = {
+		{0.659419, 0.619013, 0.504814, 0.42031},
+		{0.209995, 0.209995, 0.194034, 0.015961},
+		{0.445365, 0.415534, 0.295216, 0.188144},
+	};
+	struct light_point pts[5];
+	for (int l = 0; l < 3; l++) {
+		const struct light_rt *L = &t.ls->v[l];
+		assert_true(L->illum);
+		for (int i = 0; i < 4; i++) {
+			assert_true(light_area_points(L, v3(xs[i], 0, 0), pts));
+			double sum = 0;
+			for (int k = 0; k < 5; k++)
+				sum += pts[k].atten * fmax(0, pts[k].dir.y);
+			assert_float_equal(sum / 5, want[l][i], 2e-5);
+		}
+	}
+	lit_close(&t);
+}
+
 /* Area weights: the test callback gives 1 for the samples in `on`. */
 struct pick {
 	const bool *on;
@@ -193,8 +260,7 @@ static double area_fraction(int n, int adaptive, const bool *on)
 	struct area_scratch sc;
 	area_scratch_init(&sc, (size_t)n);
 	struct pick k = {on, &L};
-	struct light_ray lr = {v3(0, 0, -1), 2, 1};
-	rgb c = light_area(&L, v3(0, 0, 0), &lr, &sc, pick_test, &k);
+	rgb c = light_area(&L, v3(0, 0, 0), &sc, pick_test, &k);
 	area_scratch_free(&sc);
 	return c.r;
 }
@@ -271,6 +337,8 @@ int main(void)
 		cmocka_unit_test(test_features),
 		cmocka_unit_test(test_spotlight),
 		cmocka_unit_test(test_cylinder_and_fade),
+		cmocka_unit_test(test_parallel_fade),
+		cmocka_unit_test(test_area_illumination),
 		cmocka_unit_test(test_area_weights),
 		cmocka_unit_test(test_parse),
 	};
