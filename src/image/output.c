@@ -61,16 +61,17 @@ static double encoded(const float *px, int c, const struct img_out *o, bool is_f
 	double v = px[c];
 	if (!isfinite(v))
 		v = 0;
-	if (c < 3 && o->gamma > 0) {
-		/* To linear light, then to the file's encoding. */
-		if (o->gamma != 1.0)
-			v = v > 0 ? pow(v, o->gamma) : 0;
-		if (!is_float) {
-			double a = has_alpha && isfinite(px[3]) ? fmin(fmax(px[3], 0), 1) : 1;
-			if (a < 1)
-				v = a > 0 ? v / a : 0;
+	if (c >= 3)
+		return v;
+	/* To linear light (unless legacy gamma), then to the file's encoding. */
+	if (o->gamma > 0 && o->gamma != 1.0)
+		v = v > 0 ? pow(v, o->gamma) : 0;
+	if (!is_float) {
+		double a = has_alpha && isfinite(px[3]) ? fmin(fmax(px[3], 0), 1) : 1;
+		if (a < 1)
+			v = a > 0 ? v / a : 0;
+		if (o->gamma > 0)
 			v = img_srgb_encode(fmin(fmax(v, 0), 1));
-		}
 	}
 	return v;
 }

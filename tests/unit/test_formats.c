@@ -19,6 +19,7 @@
 #include "image/oiio.h"
 #include "image/output.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,17 +80,22 @@ static void write_fb(const struct framebuffer *fb, const char *path, enum img_fo
 		fail_msg("%s", err);
 }
 
-/* The colour sample the module stored for 8-bit value v under alpha a:
- * colours divided by alpha on the quantised values (measured on all
- * 65,536 pairs: a = 2, v = 1 -> 127; a = 4, v = 1 -> 63; a = 5, v = 3 ->
- * 153; a = 9, v = 6 -> 170; v >= a -> 255; a = 0 keeps v). */
+/* The colour sample stored for 8-bit value v under alpha a: files hold
+ * colours unassociated, divided by alpha before they are quantised, as
+ * POV-Ray writes them (measured with +UA: the PNG bytes are
+ * encode(colour / alpha), clipped at 1); under alpha 0 the colour is 0.
+ * Computed from the framebuffer's float samples as the writer sees them:
+ * a = 2, v = 1 -> 128; a = 4, v = 1 -> 64; v >= a -> 255. */
 static unsigned straight8(unsigned v, unsigned a)
 {
-	return a == 0 ? v : v < a ? v * 255 / a : 255;
+	if (a == 0)
+		return 0;
+	double x = (double)(float)(v / 255.0) / (double)(float)(a / 255.0);
+	return (unsigned)lround(fmin(x, 1) * 255);
 }
 
-/* PNG with alpha: every pair as the module stored it, read back with the
- * module's reader (independent of lucent's own). */
+/* PNG with alpha: every pair, read back with the OpenImageIO module's
+ * reader (independent of lucent's own). */
 static void test_png_alpha_pairs(void **state)
 {
 	(void)state;
@@ -103,8 +109,8 @@ static void test_png_alpha_pairs(void **state)
 	assert_int_equal(o.channels, 4);
 	assert_int_equal(o.bits, 8);
 	assert_true(o.file_gamma == 0); /* tagged sRGB */
-	assert_int_equal((int)(o.px[(2 * 256 + 1) * 4] * 255 + 0.5), 127);
-	assert_int_equal((int)(o.px[(4 * 256 + 1) * 4] * 255 + 0.5), 63);
+	assert_int_equal((int)(o.px[(2 * 256 + 1) * 4] * 255 + 0.5), 128);
+	assert_int_equal((int)(o.px[(4 * 256 + 1) * 4] * 255 + 0.5), 64);
 	int bad = 0;
 	for (unsigned a = 0; a < 256; a++)
 		for (unsigned v = 0; v < 256; v++) {
@@ -120,8 +126,7 @@ static void test_png_alpha_pairs(void **state)
 	fb_free(fb);
 }
 
-/* 16-bit PNG: samples round(v * 65535); with alpha floor(v * 65535 / a)
- * (measured on a million random pairs). */
+/* 16-bit PNG: samples round(v * 65535); with alpha round(v / a * 65535). */
 static void test_png16(void **state)
 {
 	(void)state;
@@ -141,10 +146,10 @@ static void test_png16(void **state)
 	assert_int_equal(o.bits, 16);
 	assert_int_equal(o.channels, 4);
 	unsigned want[12] = {16384, 32768, 65535, 65535,
-	                     /* 0.1 -> 6554, 0.3 -> 19661 under alpha 32768 */
-	                     6554 * 65535u / 32768, 0, 19661 * 65535u / 32768, 32768,
-	                     /* alpha 0 keeps the (clamped) colours */
-	                     45874, 65535, 0, 0}; /* 0.7f * 65535 = 45874.4992 */
+	                     /* 0.1 / 0.5 -> 13107, 0.3 / 0.5 -> 39321 */
+	                     13107, 0, 39321, 32768,
+	                     /* alpha 0: no colour */
+	                     0, 0, 0, 0};
 	for (int k = 0; k < 12; k++)
 		assert_int_equal((unsigned)(o.px[k] * 65535 + 0.5f), want[k]);
 	free(o.px);
