@@ -41,13 +41,16 @@ enum feature {
  * when the scene has one of these. */
 #define FEAT_MEDIA (FEAT_REFRACTION | FEAT_FADE | FEAT_FRESNEL | FEAT_DISPERSION)
 
-/* The interiors a ray is inside, innermost last. Passed by pointer and
- * copied on change: a ray entering a surface gets a new one. Deeper nesting
+/* The interiors a ray is inside, innermost last, and the band of the
+ * spectrum it carries. Passed by pointer and copied on change: a ray
+ * entering a surface gets a new one. Deeper nesting
  * than MEDIUM_MAX keeps the outer interiors and forgets the rest. */
 enum { MEDIUM_MAX = 16 };
 struct medium {
 	int n;
 	const struct interior *in[MEDIUM_MAX];
+	bool dispersed; /* the ray is one band of a dispersed ray: it disperses no more */
+	double hue;     /* its band's centre, -1/2 (red) to 1/2 (violet); 0 if not dispersed */
 };
 
 struct prepared {

@@ -47,10 +47,13 @@ double shade_caustics(double c, double power);
  * incidence cosine c, with the three wavelengths of irid_wavelength. */
 rgb shade_irid(double a, double th, double c, rgb wavelength);
 
-/* The colour weight of sample i of n of a dispersed ray (red to violet),
- * such that the n weights add up to white; and the ior of that sample for a
- * base ior and dispersion ratio (violet to red). */
+/* Dispersion splits a ray into n bands of the spectrum, i = 0 (red) to
+ * n - 1 (violet), as POV-Ray 3.7 does (measured): band i's colour is the
+ * spectrum's share between i / n and (i + 1) / n, the n colours adding up
+ * to nearly white (0.9938, 1, 0.9962); its hue, the centre of the band, is
+ * (i + 1/2) / n - 1/2, and an interior of ior I and dispersion D refracts
+ * it with ior I * D^hue. */
 rgb shade_dispersion_color(int i, int n);
-double shade_dispersion_ior(double ior, double dispersion, int i, int n);
+double shade_dispersion_hue(int i, int n);
 
 #endif

@@ -128,16 +128,46 @@ static void test_refract(void **state)
 static void test_dispersion(void **state)
 {
 	(void)state;
-	for (int n = 2; n <= 12; n++) {
+	/* POV-Ray 3.7's bands, read from 16-bit renders of a white background
+	 * seen through a prism (one band crossing an edge between black and
+	 * white at a time): 2, 3 and 5 samples, red first. */
+	static const struct {
+		int n;
+		double c[5][3];
+	} bands[] = {
+	    {2, {{0.95430, 0.72760, 0.01221}, {0.03951, 0.27240, 0.98399}}},
+	    {3, {{0.79501, 0.26363, 0}, {0.15929, 0.73487, 0.30179}, {0.03951, 0.00150, 0.69441}}},
+	    {5,
+	     {{0.42161, 0.01830, 0},
+	      {0.49509, 0.42870, 0},
+	      {0.03760, 0.49180, 0.15061},
+	      {0, 0.06120, 0.50239},
+	      {0.03951, 0, 0.34321}}},
+	};
+	for (size_t k = 0; k < sizeof bands / sizeof bands[0]; k++) {
+		for (int i = 0; i < bands[k].n; i++) {
+			rgb c = shade_dispersion_color(i, bands[k].n);
+			assert_near(c.r, bands[k].c[i][0], 4e-5);
+			assert_near(c.g, bands[k].c[i][1], 4e-5);
+			assert_near(c.b, bands[k].c[i][2], 4e-5);
+		}
+	}
+	/* The whole spectrum, whatever the number of bands: (0.9938, 1, 0.9962). */
+	for (int n = 2; n <= 151; n++) {
 		rgb sum = rgb_make(0, 0, 0);
 		for (int i = 0; i < n; i++)
 			sum = rgb_add(sum, shade_dispersion_color(i, n));
-		assert_near(sum.r, 1, 1e-12);
-		assert_near(sum.g, 1, 1e-12);
-		assert_near(sum.b, 1, 1e-12);
-		/* violet over red is the dispersion ratio */
-		assert_near(shade_dispersion_ior(1.5, 1.1, n - 1, n) / shade_dispersion_ior(1.5, 1.1, 0, n), 1.1, 1e-12);
+		assert_near(sum.r, 0.99380, 2e-5);
+		assert_near(sum.g, 1, 2e-5);
+		assert_near(sum.b, 0.99620, 2e-5);
 	}
+	/* Measured band iors: ior * dispersion^hue with hue -1/4, 1/4 for 2
+	 * samples and -1/3, 0, 1/3 for 3 (within 0.001 of the exponent). */
+	assert_near(shade_dispersion_hue(0, 2), -0.25, 1e-12);
+	assert_near(shade_dispersion_hue(1, 2), 0.25, 1e-12);
+	assert_near(shade_dispersion_hue(0, 3), -1.0 / 3, 1e-12);
+	assert_near(shade_dispersion_hue(1, 3), 0, 1e-12);
+	assert_near(shade_dispersion_hue(6, 7), 3.0 / 7, 1e-12);
 }
 
 int main(void)
