@@ -49,5 +49,9 @@ blur="$top_srcdir/scenes/cam-focal-adaptive.pov"
 "$LUCENT" -q +W80 +H60 "$blur" +WT1 +O"$WORK/fb1.png" &&
 	"$LUCENT" -q +W80 +H60 "$blur" +WT2 +O"$WORK/fb2.png"
 check "focal blur: +WT1 and +WT2 give identical files" cmp -s "$WORK/fb1.png" "$WORK/fb2.png"
+bokeh="$top_srcdir/scenes/cam-bokeh.pov"
+"$LUCENT" -q +W80 +H60 "$bokeh" +WT1 +O"$WORK/bk1.png" &&
+	"$LUCENT" -q +W80 +H60 "$bokeh" +WT2 +O"$WORK/bk2.png"
+check "focal blur with a bokeh: +WT1 and +WT2 give identical files" cmp -s "$WORK/bk1.png" "$WORK/bk2.png"
 # --- end cameras ---
 finish

@@ -144,6 +144,21 @@ static void parse_blur_samples(struct parser *p, struct camera *c)
 	}
 }
 
+/* bokeh := bokeh '{' { pigment } '}'
+ * An empty bokeh leaves the lens round, as in POV-Ray; a second pigment
+ * modifies the first, as on an object. */
+static void parse_bokeh(struct parser *p, struct camera *c)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	while (!parse_accept(p, TOK_RBRACE)) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD || t->kw != KW_PIGMENT)
+			parse_expected(p, "pigment or '}' in bokeh");
+		parse_pigment(p, &c->bokeh);
+	}
+}
+
 /* Apply what the block said in POV-Ray's order (see the file comment). */
 static void finish_camera(struct parser *p, struct camera *c, struct cam_items *it)
 {
@@ -183,7 +198,7 @@ static void finish_camera(struct parser *p, struct camera *c, struct cam_items *
  *                      | { camera_type } { camera_item } ) '}'
  * camera_item := location V | look_at V | right V | up V | direction V
  *              | sky V | angle_item | aperture F | focal_point V
- *              | blur_samples | confidence F | variance F
+ *              | blur_samples | confidence F | variance F | bokeh
  *              | transformation
  * c holds the camera to start from (camera_default()). */
 void parse_camera(struct parser *p, struct camera *c)
@@ -198,7 +213,8 @@ void parse_camera(struct parser *p, struct camera *c)
 		if (v->kind != VAL_CAMERA)
 			parse_wrong_kind(p, v, "a camera");
 		struct srcpos pos = c->pos;
-		*c = *v->cam;
+		camera_clear(c);
+		camera_copy(c, v->cam);
 		c->pos = pos;
 		parse_advance(p);
 		while (!parse_accept(p, TOK_RBRACE)) {
@@ -255,6 +271,7 @@ void parse_camera(struct parser *p, struct camera *c)
 			break;
 		}
 		case KW_VARIANCE: parse_advance(p); c->variance = parse_float(p); break;
+		case KW_BOKEH: parse_bokeh(p, c); break;
 		default:
 			parse_expected(p, "a camera item or '}'");
 		}

@@ -437,7 +437,8 @@ void parse_move_lights(struct parser *p, size_t from, const struct xform *t);
 void parse_free_light(void *light);
 
 /* The camera statement at the `camera` keyword, into c (which holds the
- * camera to start from, camera_default()) (camera_parse.c). */
+ * camera to start from, camera_default()) (camera_parse.c). The caller
+ * owns c's references (camera_clear), also when the parse fails. */
 void parse_camera(struct parser *p, struct camera *c);
 
 /* Statements (stmt.c). */

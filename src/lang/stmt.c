@@ -113,6 +113,12 @@ static struct array *parse_array(struct parser *p)
 
 static void free_pigment_cb(void *x) { free(x); }
 
+static void free_camera_cb(void *x)
+{
+	camera_clear(x);
+	free(x);
+}
+
 static void free_interior_holder(void *h)
 {
 	interior_unref(*(struct interior **)h);
@@ -224,7 +230,7 @@ static bool item_value(struct parser *p, struct value *out)
 		struct camera *c = malloc(sizeof *c);
 		if (!c) abort();
 		*c = camera_default();
-		int slot = parse_own(p, c, free_pigment_cb);
+		int slot = parse_own(p, c, free_camera_cb);
 		parse_camera(p, c);
 		parse_release(p, slot);
 		out->kind = VAL_CAMERA;
@@ -263,9 +269,16 @@ void parse_statement(struct parser *p)
 		switch (k) {
 		case KW_LIGHT_SOURCE: parse_light_statement(p); return;
 		case KW_CAMERA: {
-			struct camera c = camera_default();
-			parse_camera(p, &c);
-			p->scene->camera = c;
+			/* On the heap, so that a parse error frees what it holds. */
+			struct camera *c = malloc(sizeof *c);
+			if (!c) abort();
+			*c = camera_default();
+			int slot = parse_own(p, c, free_camera_cb);
+			parse_camera(p, c);
+			parse_release(p, slot);
+			camera_clear(&p->scene->camera);
+			p->scene->camera = *c;
+			free(c);
 			return;
 		}
 		default:

@@ -58,7 +58,10 @@ void val_clear(struct value *v)
 		free(v->mat);
 		break;
 	case VAL_MAP: blend_map_unref(v->map); break;
-	case VAL_CAMERA: free(v->cam); break;
+	case VAL_CAMERA:
+		camera_clear(v->cam);
+		free(v->cam);
+		break;
 	case VAL_LIGHT:
 		light_free_parts(v->light);
 		free(v->light);
@@ -115,7 +118,10 @@ struct value val_copy(const struct value *src)
 		interior_ref(v.mat->interior);
 		break;
 	case VAL_MAP: v.map = blend_map_ref(src->map); break;
-	case VAL_CAMERA: v.cam = dup_bytes(src->cam, sizeof *src->cam); break;
+	case VAL_CAMERA:
+		v.cam = dup_bytes(src->cam, sizeof *src->cam);
+		camera_copy(v.cam, src->cam);
+		break;
 	case VAL_LIGHT:
 		v.light = dup_bytes(src->light, sizeof *src->light);
 		light_copy_parts(v.light);

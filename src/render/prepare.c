@@ -4,6 +4,7 @@
 #include "geom/csg.h"
 #include "image/image.h"
 #include "render/atmos.h"
+#include "render/camsample.h"
 
 #include <stdlib.h>
 
@@ -299,6 +300,8 @@ struct prepared *prepare_scene(struct scene *s)
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
 	p->features = prepare_features(s);
+	if (p->features & FEAT_FOCAL_BLUR)
+		p->lens = lens_new(s);
 	/* projected_through objects are intersected by the tracer. */
 	for (size_t i = 0; i < s->nlights; i++)
 		if (s->lights[i].projected_through)
@@ -345,6 +348,7 @@ void prepared_free(struct prepared *p)
 	if (!p) return;
 	bvh_free(p->bvh);
 	atmos_ready_free(p->atmos);
+	lens_free(p->lens);
 	free((void *)p->unbounded);
 	free(p);
 }

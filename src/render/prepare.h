@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 
 struct atmos_ready;
+struct lens;
 
 enum feature {
 	FEAT_SHADOWS = 1 << 0,    /* some light casts shadows onto something */
@@ -64,6 +65,7 @@ struct prepared {
 	int quality;                     /* +Q, 0 to 11 (9 by default): see prepare_quality */
 	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA) */
 	struct atmos_ready *atmos;       /* fog and rainbows (render/atmos.h); NULL without them */
+	struct lens *lens;               /* focal blur (render/camsample.h); NULL without it */
 };
 
 /* Prepare s for rendering. s must outlive the result. */

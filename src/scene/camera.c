@@ -11,6 +11,8 @@
  * vectors. */
 #include "scene/camera.h"
 
+#include "scene/texture.h"
+
 /* POV-Ray's omnimax lens: the angle off the axis of a point at radius r of
  * the lens plane, in radians (an odd polynomial fitted to POV-Ray's
  * renders: residual under 2e-5 radians over the whole image circle). */
@@ -34,26 +36,6 @@ static double omnimax_r45(void)
 	return r;
 }
 
-/* z^2 for the two-sided normal quantile z of probability p (0 < p < 1):
- * P(|N(0,1)| <= z) = p, by Newton's method on erf. */
-static double normal_quantile2(double p)
-{
-	if (!(p > 0 && p < 1))
-		p = 0.9;
-	double z = 1.5;
-	for (int i = 0; i < 60; i++) {
-		double f = erf(z / M_SQRT2) - p;
-		double df = sqrt(2 / M_PI) * exp(-z * z / 2);
-		double step = f / df;
-		z -= step;
-		if (z < 1e-6)
-			z = 1e-6;
-		if (fabs(step) < 1e-14)
-			break;
-	}
-	return z * z;
-}
-
 struct camera camera_default(void)
 {
 	struct camera c = {
@@ -70,6 +52,19 @@ struct camera camera_default(void)
 	};
 	camera_update(&c);
 	return c;
+}
+
+void camera_copy(struct camera *dst, const struct camera *src)
+{
+	*dst = *src;
+	if (dst->bokeh)
+		pigment_ref(dst->bokeh);
+}
+
+void camera_clear(struct camera *c)
+{
+	pigment_unref(c->bokeh);
+	c->bokeh = NULL;
 }
 
 void camera_update(struct camera *c)
@@ -95,7 +90,6 @@ void camera_update(struct camera *c)
 	c->h_rad = h * (M_PI / 180);
 	c->v_rad = v * (M_PI / 180);
 	c->focal_dist = v3_dot(v3_sub(c->focal_point, c->location), c->dn);
-	c->blur_z2 = normal_quantile2(c->confidence);
 
 	/* Omnimax: the lens plane is [-1,1]^2 scaled so that up/right keep
 	 * their ratio q; a short image (q < 1) keeps the top edge at the

@@ -11,6 +11,8 @@
 
 #include <stdbool.h>
 
+struct pigment;
+
 enum camera_kind {
 	CAMERA_PERSPECTIVE, CAMERA_ORTHOGRAPHIC, CAMERA_FISHEYE, CAMERA_ULTRA_WIDE_ANGLE,
 	CAMERA_OMNIMAX, CAMERA_PANORAMIC, CAMERA_CYLINDER, CAMERA_SPHERICAL
@@ -28,6 +30,7 @@ struct camera {
 	vec3 focal_point;      /* a point of the plane in focus (parallel to right and up) */
 	int blur_samples_min, blur_samples_max;
 	double confidence, variance;
+	struct pigment *bokeh; /* focal blur's lens shape (a reference), or NULL: round */
 	struct srcpos pos;
 
 	/* Derived by camera_update from the fields above; read by camera_ray. */
@@ -35,7 +38,6 @@ struct camera {
 	double rl, ul;         /* lengths of right and up */
 	double h_rad, v_rad;   /* the angles in effect, in radians */
 	double focal_dist;     /* distance of the plane in focus along dn */
-	double blur_z2;        /* z^2 of the normal quantile for confidence (two-sided) */
 	double omni_sx, omni_sy, omni_oy; /* omnimax: image to lens-plane scale and offset */
 };
 
@@ -43,6 +45,11 @@ struct camera {
  * right <1.33,0,0>, up y, direction z, sky y; no focal blur (confidence
  * 0.9, variance 1/128). Already updated. */
 struct camera camera_default(void);
+/* The camera holds references (the bokeh pigment ...): a struct copy
+ * needs camera_copy, and every camera is cleared with camera_clear. */
+void camera_copy(struct camera *dst, const struct camera *src);
+/* Drop the camera's references; it stays a valid camera without them. */
+void camera_clear(struct camera *c);
 /* Point the camera at `at`, keeping the lengths of direction, right and up
  * and the handedness of the frame, with `sky` as the up reference. When
  * `at` lies straight along the sky vector (or sky is zero), the given

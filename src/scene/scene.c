@@ -34,6 +34,7 @@ void scene_free(struct scene *s)
 	free(s->lights);
 	free(s->groups);
 	atmos_free(&s->atmos);
+	camera_clear(&s->camera);
 	free(s);
 }
 
