@@ -304,6 +304,30 @@ static vec3 ripple_gradient(vec3 q, const struct pattern *pt, const struct patte
 	return v3_scale(g, 1.0 / n);
 }
 
+static vec3 unit_or(vec3 v, vec3 fallback)
+{
+	double l = v3_len(v);
+	return l > 0 ? v3_scale(v, 1.0 / l) : fallback;
+}
+
+/* A world-space normal carried into pattern space through the pattern's
+ * transformations (the warps leave it alone), and back. */
+static vec3 normal_to_pattern(const struct pattern *pt, vec3 n)
+{
+	for (int i = pt->nops - 1; i >= 0; i--)
+		if (pt->ops[i].kind == POP_TRANSFORM)
+			n = mat_normal(&pt->ops[i].xf.fwd, n);
+	return n;
+}
+
+static vec3 normal_from_pattern(const struct pattern *pt, vec3 n)
+{
+	for (int i = 0; i < pt->nops; i++)
+		if (pt->ops[i].kind == POP_TRANSFORM)
+			n = mat_normal(&pt->ops[i].xf.inv, n);
+	return n;
+}
+
 bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec3 n,
                             const struct pattern_ctx *ctx, vec3 *out)
 {
@@ -316,7 +340,7 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		break;
 	case PAT_DENTS: {
 		double s = noise3(q, gen);
-		d = v3_scale(dnoise3(q, gen), -amount * s * s * s * 2);
+		d = v3_scale(dnoise3(q, gen), amount * s * s * s);
 		break;
 	}
 	case PAT_WRINKLES: {
@@ -342,14 +366,18 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 			crackle_search(v3_scale(n, 1.0 / size), 2, 0, &nr);
 		vec3 r = dnoise3(v3_add(nr.point, v3(0.5, 0.5, 0.5)), gen);
 		d = v3_scale(r, amount);
-		break;
+		/* only the part across the surface tilts it */
+		d = v3_madd(d, n, -v3_dot(d, n));
+		vec3 m = v3_norm(v3_add(n, d));
+		*out = v3_len(m) > 0 ? m : n;
+		return true;
 	}
 	default:
 		return false;
 	}
-	/* only the part of the push across the surface tilts the normal */
-	d = v3_madd(d, n, -v3_dot(d, n));
-	vec3 m = v3_norm(v3_add(n, d));
-	*out = v3_len(m) > 0 ? m : n;
+	/* The push is added in pattern space, along n too (measured, kinds.h). */
+	vec3 np = unit_or(normal_to_pattern(pt, n), n);
+	vec3 m = normal_from_pattern(pt, v3_add(np, d));
+	*out = unit_or(m, n);
 	return true;
 }
