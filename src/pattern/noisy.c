@@ -21,12 +21,18 @@ static int gen_of(const struct pattern *pt, const struct pattern_ctx *ctx)
 	return ctx && ctx->noise_generator ? ctx->noise_generator : 2;
 }
 
-/* The noise as POV-Ray's granite, wrinkles and scalar turbulence use it:
- * clipped to [0.25, 0.75] (measured). */
-static double clipped_noise(vec3 p, int gen)
+/* The noise as POV-Ray's granite and wrinkles use it, in [0, 1]: with
+ * generator 1 the noise itself, with 2 and 3 twice the noise less 0.5,
+ * clipped (measured: granite and wrinkles with generator 2 are exact with
+ * this; with generator 1 they are exact with the noise as it is, where the
+ * generator-2 form would be about twice as large). */
+static double turb_noise(vec3 p, int gen)
 {
 	double n = noise3(p, gen);
-	return n < 0.25 ? 0.25 : n > 0.75 ? 0.75 : n;
+	if (gen == 1)
+		return n;
+	n = 2 * n - 0.5;
+	return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
 /* The classic turbulence marble, wood and agate add to their value:
@@ -59,23 +65,23 @@ PATTERN_FN(dents)
 	return n * n * n;
 }
 
-/* granite: 6 octaves of 2 |clipped noise − 0.5| / 2^i at 4 × 2^i × q. */
+/* granite: 6 octaves of |turb_noise − 0.5| / 2^i at 4 × 2^i × q. */
 PATTERN_FN(granite)
 {
 	int gen = gen_of(pt, ctx);
 	double sum = 0, freq = 4;
 	for (int i = 0; i < 6; i++, freq *= 2)
-		sum += 2.0 * fabs(clipped_noise(v3_scale(q, freq), gen) - 0.5) * 4 / freq;
+		sum += fabs(turb_noise(v3_scale(q, freq), gen) - 0.5) * 4 / freq;
 	return sum;
 }
 
-/* wrinkles: 10 octaves of (clipped noise − 0.25) / 2^i at 2^i × q. */
+/* wrinkles: 10 octaves of turb_noise / 2 / 2^i at 2^i × q. */
 PATTERN_FN(wrinkles)
 {
 	int gen = gen_of(pt, ctx);
 	double sum = 0, freq = 1;
 	for (int i = 0; i < 10; i++, freq *= 2)
-		sum += (clipped_noise(v3_scale(q, freq), gen) - 0.25) / freq;
+		sum += 0.5 * turb_noise(v3_scale(q, freq), gen) / freq;
 	return sum;
 }
 

@@ -172,6 +172,45 @@ static void test_patterns_measured(void **state)
 	assert_near(raw_at(&wd, v3(3, 4, 9)), 5, 1e-12);
 }
 
+/* granite, wrinkles and marble's turbulence with noise_generator 1, as
+ * POV-Ray 3.7.0 prints them for
+ *   function { pattern { wrinkles noise_generator 1 } },
+ *   { granite noise_generator 1 }, { marble turbulence 0.7 noise_generator 1 }
+ * at these points (divided by 3 as in the scene); the last is a point
+ * where the generator-1 noise clamps at 1. They use the noise itself
+ * where generator 2 uses twice the noise less 0.5, clipped. */
+static void test_generator1_patterns(void **state)
+{
+	(void)state;
+	static const struct { double x, y, z, w, g, m; } c[] = {
+		{2.031306, -9.361354, 9.918965, 0.5039597987, 0.3172673197, 0.7455978781},
+		{5.792288, 3.218807, -4.152747, 0.4372805652, 0.2287096058, 0.9272388920},
+		{-8.399916, 2.727385, -8.792391, 0.4535645259, 0.5544242093, 0.3537332160},
+		{5.154232, 9.161627, 7.015720, 0.7545779428, 0.2807289623, 0.4785758032},
+		{-2.082416, 1.627608, -4.395758, 0.5140616018, 0.6633787196, 0.0372135324},
+	};
+	struct pattern g = pattern_make(PAT_GRANITE), w = pattern_make(PAT_WRINKLES), m = pattern_make(PAT_MARBLE);
+	g.noise_generator = w.noise_generator = m.noise_generator = 1;
+	m.has_turbulence = true;
+	m.turb.amount = v3(0.7, 0.7, 0.7);
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern_ctx ctx = ctx_at(v3(c[i].x / 3, c[i].y / 3, c[i].z / 3));
+		assert_near(pattern_value(&w, &ctx), c[i].w, TOL);
+		assert_near(pattern_value(&g, &ctx), c[i].g, TOL);
+		assert_near(pattern_value(&m, &ctx), c[i].m, TOL);
+	}
+	/* the first octave's noise clamped at 1 (raw 1.08): marble turbulence
+	 * 0.5 octaves 1 adds 1/2 (POV-Ray: 0.0000500000, i.e. x + 0.5 wrapped
+	 * by ramp_wave's 1.00001) */
+	struct pattern m1 = pattern_make(PAT_MARBLE);
+	m1.noise_generator = 1;
+	m1.has_turbulence = true;
+	m1.turb.amount = v3(0.5, 0.5, 0.5);
+	m1.turb.octaves = 1;
+	m1.wave = WAVE_RAMP;
+	assert_near(raw_at(&m1, v3(5.154232, 9.161627, 7.015720)), 5.154232 + 0.5, 1e-9);
+}
+
 static vec3 warp1(const struct pattern_op *op, vec3 p)
 {
 	struct pattern pt = pattern_make(PAT_BOZO);
@@ -430,6 +469,29 @@ static void test_special_normals(void **state)
 		assert_true(pattern_special_normal(&pt, 0, c.p, n, &c, &out));
 		assert_vec_near(out, 0, 1, 0, 1e-12);
 	}
+	/* POV-Ray's normals for plane { z, 0 } seen from -z with normal { N },
+	 * at (0.03125, 0.96875, 0): rendered lit by three coloured parallel
+	 * lights at <1,0,-1>, <0,1,-1>, <0,0,-1> (16-bit linear PPM) and solved
+	 * for the normal, so within 3e-5 */
+	static const struct { enum pattern_kind k; double sx, rz; vec3 want; } m[] = {
+		{PAT_BUMPS, 1, 0, {-0.05582, -0.04792, -0.99727}},      /* bumps 0.5 */
+		{PAT_DENTS, 1, 0, {-0.00568, -0.00488, -0.99995}},      /* dents 0.5 */
+		{PAT_BUMPS, 0.5, 0, {-0.09130, -0.06377, -0.99376}},    /* bumps 0.5 scale <0.5, 1, 1> */
+		{PAT_BUMPS, 1, 30, {0.04667, -0.29223, -0.95520}},      /* bumps 0.5 rotate 30*z */
+	};
+	for (size_t i = 0; i < sizeof m / sizeof m[0]; i++) {
+		struct pattern pt = pattern_make(m[i].k);
+		struct xform t = xform_scale(v3(m[i].sx, 1, 1));
+		if (m[i].rz != 0)
+			t = xform_rotate(v3(0, 0, m[i].rz));
+		pattern_transform(&pt, &t);
+		struct pattern_ctx c = ctx_at(v3(0.03125, 0.96875, 0));
+		c.noise_generator = 2;
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 0.5, c.p, v3(0, 0, -1), &c, &out));
+		assert_vec_near(out, m[i].want.x, m[i].want.y, m[i].want.z, 3e-5);
+		pattern_clear(&pt);
+	}
 	struct pattern g = pattern_make(PAT_GRANITE);
 	struct pattern_ctx c = ctx_at(v3(0, 0, 0));
 	vec3 out;
@@ -441,6 +503,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_noise_generators_1_2),
 		cmocka_unit_test(test_noise_generator1_clips),
+		cmocka_unit_test(test_generator1_patterns),
 		cmocka_unit_test(test_noise_character),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
