@@ -95,14 +95,16 @@ PATTERN_FN(wood)
 	return sqrt(q.x * q.x + q.y * q.y) + value_turbulence(pt, q, gen_of(pt, ctx));
 }
 
-/* agate: ((1 + sin(2π × 1.1 × u)) / 2)^0.77 with u = z plus agate_turb ×
- * its own turbulence (the z-profile was measured; the turbulence is ours:
- * the scalar turbulence with omega 0.7, lambda 2, 6 octaves, doubled). */
+/* agate: ((1 + sin(2π × 1.1 × u)) / 2)^0.77 with u = z + 26/11 ×
+ * agate_turb × the scalar turbulence at q, with the pattern's octaves,
+ * omega and lambda (default 6, 0.5, 2). Measured: with a small agate_turb
+ * the phase moves by exactly 26/11 (to 1e-6) times the turbulence, for
+ * generators 1 and 2 and other octaves, omega and lambda; `turbulence`
+ * moves the point (POV-Ray gives the same values as with warp { turbulence }). */
 PATTERN_FN(agate)
 {
-	static const struct turbulence at = {{1, 1, 1}, 6, 0.7, 2.0};
-	int gen = gen_of(pt, ctx);
-	double u = q.z + pt->f[0] * 2.0 * turbulence1(q, &at, gen) + value_turbulence(pt, q, gen);
+	double agate_turb = (float)pt->f[0];          /* single precision in POV-Ray (measured) */
+	double u = q.z + agate_turb * (26.0 / 11.0) * turbulence1(q, &pt->turb, gen_of(pt, ctx));
 	double s = (1.0 + sin(2 * M_PI * 1.1 * u)) * 0.5;
 	return pow(s < 0 ? 0 : s, 0.77);
 }

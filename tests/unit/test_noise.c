@@ -211,6 +211,39 @@ static void test_generator1_patterns(void **state)
 	assert_near(raw_at(&m1, v3(5.154232, 9.161627, 7.015720)), 5.154232 + 0.5, 1e-9);
 }
 
+/* agate as POV-Ray 3.7.0 prints it for function { pattern { agate } },
+ * { agate agate_turb 0.3 }, { agate turbulence 0.3 } and
+ * { agate agate_turb 0.01 octaves 3 } (its own turbulence takes the
+ * pattern's octaves; `turbulence` moves the point). */
+static void test_agate_measured(void **state)
+{
+	(void)state;
+	static const struct { double x, y, z, v[4]; } c[] = {
+		{0.3, 0.7, 1.1, {0.6091121768, 0.0000613103, 0.7121282613, 0}},
+		{-1.25, 0.4, 2.3, {0.3041154618, 0.4171510035, 0.3133504117, 0}},
+		{0.05, -0.6, -0.35, {0.0260655935, 0.4835972691, 0.0169681402, 0}},
+		{2.7, 1.3, -0.8, {0.3672281373, 0.4218382181, 0.0166465379, 0}},
+		{2.031306 / 3, -9.361354 / 3, 9.918965 / 3, {-1, -1, -1, 0.166992157638}},
+		{5.792288 / 3, 3.218807 / 3, -4.152747 / 3, {-1, -1, -1, 0.619534629642}},
+	};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		for (int k = 0; k < 4; k++) {
+			if (c[i].v[k] < 0 || (k == 3) != (i >= 4))
+				continue;
+			struct pattern a = pattern_make(PAT_AGATE);
+			a.f[0] = k == 1 ? 0.3 : k == 3 ? 0.01 : 1;
+			if (k == 2) {
+				a.has_turbulence = true;
+				a.turb.amount = v3(0.3, 0.3, 0.3);
+			}
+			if (k == 3)
+				a.turb.octaves = 3;
+			struct pattern_ctx ctx = ctx_at(v3(c[i].x, c[i].y, c[i].z));
+			assert_near(pattern_value(&a, &ctx), c[i].v[k], TOL);
+		}
+	}
+}
+
 static vec3 warp1(const struct pattern_op *op, vec3 p)
 {
 	struct pattern pt = pattern_make(PAT_BOZO);
@@ -504,6 +537,7 @@ int main(void)
 		cmocka_unit_test(test_noise_generators_1_2),
 		cmocka_unit_test(test_noise_generator1_clips),
 		cmocka_unit_test(test_generator1_patterns),
+		cmocka_unit_test(test_agate_measured),
 		cmocka_unit_test(test_noise_character),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
