@@ -1,5 +1,5 @@
 // pat-normals.pov: the normal patterns POV-Ray perturbs with formulas of
-// their own (bumps, dents; generators 1 and 2, scaled, with bump sizes
+// their own (bumps, dents, wrinkles; generators 1 and 2, scaled, with bump sizes
 // above 1) on flat boxes lit from a low angle, so the perturbation shows.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -14,4 +14,4 @@ B(normal { bumps 2 noise_generator 1 scale 0.5 }, 0, 1.3)
 B(normal { dents 1.5 scale 0.4 }, 2.6, 1.3)
 B(normal { dents 4 noise_generator 1 scale <0.6, 1, 0.3> }, -2.6, -1.3)
 B(normal { bumps 0.8 scale 0.25 rotate 30*y translate 0.3 }, 0, -1.3)
-B(normal { dents 0.7 scale 0.2 }, 2.6, -1.3)
+B(normal { wrinkles 0.8 scale 0.3 }, 2.6, -1.3)

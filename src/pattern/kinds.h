@@ -42,7 +42,8 @@ PATTERN_FN(tiling); PATTERN_FN(pavement);
  * linear output) and solving for the normal: bumps A gives
  * normalize(n + A·DNoise(q)), dents A normalize(n + A·noise(q)³·DNoise(q)),
  * both within 2e-5 of POV-Ray (the output's quantisation), for generators
- * 1 and 2. With transformations the push is added in pattern space: n is
+ * 1 and 2; wrinkles A normalize(n + A·Σ_i 2^-i |DNoise(2^i q)|) (ten
+ * octaves, the absolute value per component); ripples and waves: noisy.c. With transformations the push is added in pattern space: n is
  * carried there as a normal and normalized, the sum carried back
  * (scale <0.5, 1, 1> doubles the push's x, a uniform scale changes
  * nothing, measured). */

@@ -109,21 +109,28 @@ PATTERN_FN(agate)
 	return pow(s < 0 ? 0 : s, 0.77);
 }
 
-/* ---- wave sources (ripples, waves) ---- */
+/* ---- wave sources (ripples, waves) ----
+ * POV-Ray's wave sources as it draws them for a render: source i is a unit
+ * vector w_i and a frequency f_i (only waves uses it). Measured from
+ * POV-Ray 3.7 renders with global_settings { number_of_waves K } for
+ * K = 1, 2, ...: each K adds one source and keeps the others, so they were
+ * fitted one at a time (ripples at two heights for the centre, waves for
+ * the frequency), then together; they reproduce POV-Ray's values to about
+ * 2e-5, its 16-bit output's resolution.
+ * Both the value and the normal measure the distance from the pattern-space
+ * point to w_i. (The fits used an orthographic camera looking straight
+ * down, whose image POV-Ray and lucent both mirror in x; a straight view
+ * of the normal fixed the sign.) Functions evaluated while parsing, before
+ * a render, see another set in POV-Ray; lucent uses this one throughout. */
 
-#define MAX_WAVES 32
+static const struct wave_source {
+	vec3 w;
+	double f;
+} wave_sources[] = {
+#include "pattern/wave_sources.inc"
+};
 
-/* The i-th wave source: a point in the unit cube and a size factor, fixed
- * for every scene (from the noise, sampled far from the origin). */
-static vec3 wave_source(int i, double *size)
-{
-	vec3 s = v3(37.5 + 3.1 * i, 91.25 - 1.7 * i, 13.75 + 2.3 * i);
-	vec3 d = dnoise3(s, 2);
-	vec3 c = v3(0.5 + d.x, 0.5 + d.y, 0.5 + d.z);
-	c = v3(c.x - floor(c.x), c.y - floor(c.y), c.z - floor(c.z));
-	*size = 0.5 + noise3(v3_scale(s, 1.37), 2);
-	return c;
-}
+#define MAX_WAVES ((int)(sizeof wave_sources / sizeof wave_sources[0]))
 
 static int wave_count(const struct pattern_ctx *ctx)
 {
@@ -131,34 +138,30 @@ static int wave_count(const struct pattern_ctx *ctx)
 	return n > MAX_WAVES ? MAX_WAVES : n;
 }
 
-/* ripples: the mean of frac(distance to each source), folded into [0, 1]. */
+/* ripples and waves use the pattern's frequency F and phase P inside the
+ * sine, and then (like every pattern) on the value too (measured). */
+
+/* ripples: the mean over the sources of 0.5 + 0.5 sin(2π (F d + P)). */
 PATTERN_FN(ripples)
 {
-	(void)pt;
 	int n = wave_count(ctx);
-	double sum = 0;
-	for (int i = 0; i < n; i++) {
-		double size;
-		double d = v3_len(v3_sub(q, wave_source(i, &size)));
-		sum += 0.5 + 0.5 * sin(2 * M_PI * d);
-	}
+	double sum = 0, F = pt->frequency;
+	for (int i = 0; i < n; i++)
+		sum += 0.5 + 0.5 * sin(2 * M_PI * (F * v3_len(v3_sub(q, wave_sources[i].w)) + pt->phase));
 	return sum / n;
 }
 
-/* waves: broader, rounder: cosines of the distance, each source weighted
- * by its size, mapped into [0, 1]. */
+/* waves: 0.5 plus the mean over the sources of
+ * 0.2 sin(2π (f F d + P)) / f. */
 PATTERN_FN(waves)
 {
-	(void)pt;
 	int n = wave_count(ctx);
-	double sum = 0, wsum = 0;
+	double sum = 0, F = pt->frequency;
 	for (int i = 0; i < n; i++) {
-		double size;
-		double d = v3_len(v3_sub(q, wave_source(i, &size)));
-		sum += size * cos(2 * M_PI * d);
-		wsum += size;
+		double f = wave_sources[i].f;
+		sum += 0.2 * sin(2 * M_PI * (f * F * v3_len(v3_sub(q, wave_sources[i].w)) + pt->phase)) / f;
 	}
-	return 0.5 + 0.5 * sum / wsum;
+	return 0.5 + sum / n;
 }
 
 /* ---- cells, crackle ---- */
@@ -293,21 +296,21 @@ PATTERN_FN(facets)
 
 /* ---- special normal perturbations ---- */
 
-static vec3 ripple_gradient(vec3 q, const struct pattern *pt, const struct pattern_ctx *ctx, bool waves)
+/* The push of the ripples and waves normals: the mean over the sources of
+ * s × (q − w_i) / |q − w_i|, s = sin(2π (F d + P)) for ripples and
+ * sin(2π (f F d + P)) / f for waves, F and P the pattern's frequency and
+ * phase (measured like bumps, kinds.h; one source, then ten). */
+static vec3 ripple_push(vec3 q, const struct pattern *pt, const struct pattern_ctx *ctx, bool waves)
 {
 	int n = wave_count(ctx);
-	double freq = pt->frequency != 0 ? pt->frequency : 1;
 	vec3 g = v3(0, 0, 0);
 	for (int i = 0; i < n; i++) {
-		double size;
-		vec3 c = wave_source(i, &size);
-		vec3 d = v3_sub(q, c);
+		vec3 d = v3_sub(q, wave_sources[i].w);
 		double r = v3_len(d);
-		if (r < 1e-9)
+		if (r == 0)
 			continue;
-		double arg = 2 * M_PI * (r * freq + pt->phase);
-		double s = waves ? -sin(arg) * size : cos(arg);
-		g = v3_madd(g, d, s / r);
+		double f = waves ? wave_sources[i].f : 1;
+		g = v3_madd(g, d, sin(2 * M_PI * (f * pt->frequency * r + pt->phase)) / f / r);
 	}
 	return v3_scale(g, 1.0 / n);
 }
@@ -352,15 +355,18 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		break;
 	}
 	case PAT_WRINKLES: {
+		/* 10 octaves of |DNoise| per component (measured) */
 		d = v3(0, 0, 0);
 		double amp = 1, freq = 1;
-		for (int i = 0; i < 10; i++, amp *= 0.5, freq *= 2)
-			d = v3_madd(d, dnoise3(v3_scale(q, freq), gen), amp);
+		for (int i = 0; i < 10; i++, amp *= 0.5, freq *= 2) {
+			vec3 o = dnoise3(v3_scale(q, freq), gen);
+			d = v3_madd(d, v3(fabs(o.x), fabs(o.y), fabs(o.z)), amp);
+		}
 		d = v3_scale(d, amount);
 		break;
 	}
 	case PAT_RIPPLES: case PAT_WAVES:
-		d = v3_scale(ripple_gradient(q, pt, ctx, pt->kind == PAT_WAVES), amount);
+		d = v3_scale(ripple_push(q, pt, ctx, pt->kind == PAT_WAVES), amount);
 		break;
 	case PAT_FACETS: {
 		/* facets size F: the normal quantised to a grid of cell size F and

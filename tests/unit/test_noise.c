@@ -472,6 +472,42 @@ static void test_ripples_waves_character(void **state)
 	}
 }
 
+/* ripples and waves as POV-Ray 3.7.0 renders them with 10 wave sources:
+ * a plane at y = 0 seen from above (orthographic, 160 x 160 over
+ * [-2, 3] x [-2, 3], an image POV-Ray mirrors in x: the points below are
+ * the world points of the pixels) with pigment { K [frequency F phase P] color_map
+ * { [0 rgb 0] [1 rgb 1] } }, ambient 1, written as a linear 16-bit PPM:
+ * the values below are pixels of those images, so within 2/65535 plus
+ * the sources' measurement error (6e-5 in all). The normals: plane { z, 0 }
+ * seen from -z with normal { K 0.5 [frequency F phase P] }, solved from
+ * three coloured lights as for bumps (test_special_normals), at
+ * (0.03125, 0.96875, 0). */
+static void test_ripples_waves_measured(void **state)
+{
+	(void)state;
+	static const struct { enum pattern_kind k; double F, P; double v[3]; vec3 n; } c[] = {
+		{PAT_RIPPLES, 1, 0, {0.5121843, 0.5704128, 0.3793240}, {0.01039, -0.22515, -0.97426}},
+		{PAT_WAVES, 1, 0, {0.3769894, 0.6744488, 0.3390860}, {-0.13464, 0.18066, -0.97427}},
+		{PAT_RIPPLES, 2, 0.3, {0.7712520, 0.2921493, 0.3875181}, {0.07367, -0.01793, -0.99710}},
+		{PAT_WAVES, 0.7, 0.2, {0.4427558, 0.6098421, 0.4301976}, {-0.22773, 0.13565, -0.96422}},
+	};
+	static const vec3 pts[3] = {{2.890625, 0, 2.828125}, {0.578125, 0, -0.765625}, {-1.390625, 0, 1.953125}};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern pt = pattern_make(c[i].k);
+		pt.frequency = c[i].F;
+		pt.phase = c[i].P;
+		for (int j = 0; j < 3; j++) {
+			struct pattern_ctx ctx = ctx_at(pts[j]);
+			assert_near(pattern_value(&pt, &ctx), c[i].v[j], 6e-5);
+		}
+		struct pattern_ctx ctx = ctx_at(v3(0.03125, 0.96875, 0));
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 0.5, ctx.p, v3(0, 0, -1), &ctx, &out));
+		assert_vec_near(out, c[i].n.x, c[i].n.y, c[i].n.z, 4e-5);
+		pattern_clear(&pt);
+	}
+}
+
 /* number_of_waves (pattern_ctx.number_of_waves, from global_settings)
  * changes the sources of ripples and waves; 0 means POV-Ray's 10. */
 static void test_number_of_waves(void **state)
@@ -511,6 +547,7 @@ static void test_special_normals(void **state)
 		{PAT_DENTS, 1, 0, {-0.00568, -0.00488, -0.99995}},      /* dents 0.5 */
 		{PAT_BUMPS, 0.5, 0, {-0.09130, -0.06377, -0.99376}},    /* bumps 0.5 scale <0.5, 1, 1> */
 		{PAT_BUMPS, 1, 30, {0.04667, -0.29223, -0.95520}},      /* bumps 0.5 rotate 30*z */
+		{PAT_WRINKLES, 1, 0, {0.19185, 0.15821, -0.96857}},    /* wrinkles 0.5 */
 	};
 	for (size_t i = 0; i < sizeof m / sizeof m[0]; i++) {
 		struct pattern pt = pattern_make(m[i].k);
@@ -538,6 +575,7 @@ int main(void)
 		cmocka_unit_test(test_noise_generator1_clips),
 		cmocka_unit_test(test_generator1_patterns),
 		cmocka_unit_test(test_agate_measured),
+		cmocka_unit_test(test_ripples_waves_measured),
 		cmocka_unit_test(test_noise_character),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
