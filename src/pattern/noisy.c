@@ -139,15 +139,16 @@ static int wave_count(const struct pattern_ctx *ctx)
 }
 
 /* ripples and waves use the pattern's frequency F and phase P inside the
- * sine, and then (like every pattern) on the value too (measured). */
+ * sine, and then (like every pattern) on the value too (measured; both in
+ * single precision, as POV-Ray keeps them). */
 
 /* ripples: the mean over the sources of 0.5 + 0.5 sin(2π (F d + P)). */
 PATTERN_FN(ripples)
 {
 	int n = wave_count(ctx);
-	double sum = 0, F = pt->frequency;
+	double sum = 0, F = (float)pt->frequency, P = (float)pt->phase;
 	for (int i = 0; i < n; i++)
-		sum += 0.5 + 0.5 * sin(2 * M_PI * (F * v3_len(v3_sub(q, wave_sources[i].w)) + pt->phase));
+		sum += 0.5 + 0.5 * sin(2 * M_PI * (F * v3_len(v3_sub(q, wave_sources[i].w)) + P));
 	return sum / n;
 }
 
@@ -156,10 +157,10 @@ PATTERN_FN(ripples)
 PATTERN_FN(waves)
 {
 	int n = wave_count(ctx);
-	double sum = 0, F = pt->frequency;
+	double sum = 0, F = (float)pt->frequency, P = (float)pt->phase;
 	for (int i = 0; i < n; i++) {
 		double f = wave_sources[i].f;
-		sum += 0.2 * sin(2 * M_PI * (f * F * v3_len(v3_sub(q, wave_sources[i].w)) + pt->phase)) / f;
+		sum += 0.2 * sin(2 * M_PI * (f * F * v3_len(v3_sub(q, wave_sources[i].w)) + P)) / f;
 	}
 	return 0.5 + sum / n;
 }
@@ -310,7 +311,8 @@ static vec3 ripple_push(vec3 q, const struct pattern *pt, const struct pattern_c
 		if (r == 0)
 			continue;
 		double f = waves ? wave_sources[i].f : 1;
-		g = v3_madd(g, d, sin(2 * M_PI * (f * pt->frequency * r + pt->phase)) / f / r);
+		double F = (float)pt->frequency, P = (float)pt->phase;
+		g = v3_madd(g, d, sin(2 * M_PI * (f * F * r + P)) / f / r);
 	}
 	return v3_scale(g, 1.0 / n);
 }

@@ -508,6 +508,28 @@ static void test_ripples_waves_measured(void **state)
 	}
 }
 
+/* ripples and waves to POV-Ray's printed digits: POV-Ray 3.7.0's
+ *   #declare F = function { pattern { ripples } }   (and waves)
+ *   #debug concat(str(F(x, y, z), 0, 16), "\n")
+ * at random points (its first ten wave sources were fitted to 300 such
+ * values, wave_sources.inc). */
+static void test_ripples_waves_exact(void **state)
+{
+	(void)state;
+	static const double c[][5] = {
+		{-0.285723, 0.358634, 2.545264, 0.7991793230897866, 0.4513831025835261},
+		{-0.2061, 0.047048, 0.524309, 0.7114684459881367, 0.7419058889913398},
+		{-1.892038, 0.071452, 0.779296, 0.4030254248907793, 0.3088984131599550},
+		{1.757861, -2.435259, -1.179592, 0.6386847570729439, 0.4015832847579525},
+	};
+	struct pattern r = pattern_make(PAT_RIPPLES), w = pattern_make(PAT_WAVES);
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern_ctx ctx = ctx_at(v3(c[i][0], c[i][1], c[i][2]));
+		assert_near(pattern_value(&r, &ctx), c[i][3], 1e-12);
+		assert_near(pattern_value(&w, &ctx), c[i][4], 1e-12);
+	}
+}
+
 /* number_of_waves (pattern_ctx.number_of_waves, from global_settings)
  * changes the sources of ripples and waves; 0 means POV-Ray's 10. */
 static void test_number_of_waves(void **state)
@@ -576,6 +598,7 @@ int main(void)
 		cmocka_unit_test(test_generator1_patterns),
 		cmocka_unit_test(test_agate_measured),
 		cmocka_unit_test(test_ripples_waves_measured),
+		cmocka_unit_test(test_ripples_waves_exact),
 		cmocka_unit_test(test_noise_character),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
