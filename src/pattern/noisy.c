@@ -110,18 +110,17 @@ PATTERN_FN(agate)
 }
 
 /* ---- wave sources (ripples, waves) ----
- * POV-Ray's wave sources as it draws them for a render: source i is a unit
- * vector w_i and a frequency f_i (only waves uses it). Measured from
- * POV-Ray 3.7 renders with global_settings { number_of_waves K } for
- * K = 1, 2, ...: each K adds one source and keeps the others, so they were
- * fitted one at a time (ripples at two heights for the centre, waves for
- * the frequency), then together; they reproduce POV-Ray's values to about
- * 2e-5, its 16-bit output's resolution.
- * Both the value and the normal measure the distance from the pattern-space
- * point to w_i. (The fits used an orthographic camera looking straight
- * down, whose image POV-Ray and lucent both mirror in x; a straight view
- * of the normal fixed the sign.) Functions evaluated while parsing, before
- * a render, see another set in POV-Ray; lucent uses this one throughout. */
+ * POV-Ray's wave sources: source i is a unit vector w_i and a frequency
+ * f_i (only waves uses it); both the value and the normal measure the
+ * distance from the pattern-space point to w_i. Measured from POV-Ray 3.7
+ * renders with global_settings { number_of_waves K } for K = 1, 2, ...:
+ * each K adds one source and keeps the others, so they were fitted one at
+ * a time (ripples at two heights for the centre, waves for the frequency;
+ * the orthographic camera looking straight down that was used shows the
+ * image mirrored in x in POV-Ray, which the fits allowed for). The first
+ * ten were then refined against function { pattern { ripples } } and
+ * { waves } as POV-Ray prints them while parsing (the same sources), to
+ * 1e-15 (wave_sources.inc). */
 
 static const struct wave_source {
 	vec3 w;
