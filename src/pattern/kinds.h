@@ -35,7 +35,18 @@ PATTERN_FN(tiling); PATTERN_FN(pavement);
 /* The normal patterns that POV-Ray perturbs with a formula of their own
  * rather than the slope of their value (bumps, dents, ripples, waves,
  * wrinkles, facets): the perturbed unit normal from the unit normal n at
- * world point p (noisy.c). Returns false for every other kind. */
+ * world point p (noisy.c). Returns false for every other kind.
+ * n must already face the ray: POV-Ray adds the push to the normal that
+ * faces the viewer, along-normal part included, and normalizes. Measured
+ * by rendering a plane lit by three coloured parallel lights (16-bit,
+ * linear output) and solving for the normal: bumps A gives
+ * normalize(n + A·DNoise(q)), dents A normalize(n + A·noise(q)³·DNoise(q)),
+ * both within 2e-5 of POV-Ray (the output's quantisation), for generators
+ * 1 and 2; wrinkles A normalize(n + A·Σ_i 2^-i |DNoise(2^i q)|) (ten
+ * octaves, the absolute value per component); ripples and waves: noisy.c. With transformations the push is added in pattern space: n is
+ * carried there as a normal and normalized, the sum carried back
+ * (scale <0.5, 1, 1> doubles the push's x, a uniform scale changes
+ * nothing, measured). */
 bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec3 n,
                             const struct pattern_ctx *ctx, vec3 *out);
 

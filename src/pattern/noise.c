@@ -139,14 +139,18 @@ vec3 dnoise3(vec3 p, int generator)
 
 /* The scalar turbulence: Σ over the octaves of (noise − 0.25) × omega^i at
  * p × lambda^i, the first octave's noise clipped to [0.25, 0.75] (measured:
- * POV-Ray's marble). POV-Ray keeps omega and lambda in single precision. */
+ * POV-Ray's marble); with generator 1, of noise / 2 (measured the same
+ * way, also where the noise clamps at 0 and 1, in the first octave and
+ * the second). POV-Ray keeps omega and lambda in single precision. */
 double turbulence1(vec3 p, const struct turbulence *t, int generator)
 {
 	double omega = (float)t->omega, lambda = (float)t->lambda;
 	double sum = 0, amp = 1, freq = 1;
 	for (int i = 0; i < t->octaves; i++) {
 		double n = noise3(v3_scale(p, freq), generator);
-		if (i == 0)
+		if (generator == 1)
+			n = 0.5 * n + 0.25;
+		else if (i == 0)
 			n = n < 0.25 ? 0.25 : n > 0.75 ? 0.75 : n;
 		sum += amp * (n - 0.25);
 		amp *= omega;

@@ -1,12 +1,14 @@
 /* noisy.c: the noise-based patterns (see kinds.h) and the special normal
  * perturbations of bumps, dents, ripples, waves, wrinkles and facets.
  *
- * Values measured against POV-Ray 3.7 with `function { pattern { K } }`
- * (bozo, spotted, bumps, dents, granite, wrinkles, marble, wood and their
- * turbulence agree with it to 1e-10; so do cells and crackle, from POV-Ray's
- * cell random numbers, cell_table.h); agate, ripples, waves and the special
- * normals follow POV-Ray's documented construction with random tables of our
- * own (see doc/materials-noise.md). */
+ * Values measured against POV-Ray 3.7 with `function { pattern { K } }`:
+ * bozo, spotted, bumps, dents, granite, wrinkles, marble, agate, ripples,
+ * waves, and their turbulence (generators 1 and 2) agree with it to 1e-10;
+ * so do cells and crackle, from POV-Ray's cell random numbers
+ * (cell_table.h). The normals of bumps, dents, wrinkles, ripples and waves
+ * were measured from renders (kinds.h) and agree to 3e-5; facets' normal
+ * follows POV-Ray's description. Not POV-Ray's: generator 3 (noise.c) and
+ * wood's turbulence. */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
@@ -21,12 +23,18 @@ static int gen_of(const struct pattern *pt, const struct pattern_ctx *ctx)
 	return ctx && ctx->noise_generator ? ctx->noise_generator : 2;
 }
 
-/* The noise as POV-Ray's granite, wrinkles and scalar turbulence use it:
- * clipped to [0.25, 0.75] (measured). */
-static double clipped_noise(vec3 p, int gen)
+/* The noise as POV-Ray's granite and wrinkles use it, in [0, 1]: with
+ * generator 1 the noise itself, with 2 and 3 twice the noise less 0.5,
+ * clipped (measured: granite and wrinkles with generator 2 are exact with
+ * this; with generator 1 they are exact with the noise as it is, where the
+ * generator-2 form would be about twice as large). */
+static double turb_noise(vec3 p, int gen)
 {
 	double n = noise3(p, gen);
-	return n < 0.25 ? 0.25 : n > 0.75 ? 0.75 : n;
+	if (gen == 1)
+		return n;
+	n = 2 * n - 0.5;
+	return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
 /* The classic turbulence marble, wood and agate add to their value:
@@ -59,23 +67,23 @@ PATTERN_FN(dents)
 	return n * n * n;
 }
 
-/* granite: 6 octaves of 2 |clipped noise − 0.5| / 2^i at 4 × 2^i × q. */
+/* granite: 6 octaves of |turb_noise − 0.5| / 2^i at 4 × 2^i × q. */
 PATTERN_FN(granite)
 {
 	int gen = gen_of(pt, ctx);
 	double sum = 0, freq = 4;
 	for (int i = 0; i < 6; i++, freq *= 2)
-		sum += 2.0 * fabs(clipped_noise(v3_scale(q, freq), gen) - 0.5) * 4 / freq;
+		sum += fabs(turb_noise(v3_scale(q, freq), gen) - 0.5) * 4 / freq;
 	return sum;
 }
 
-/* wrinkles: 10 octaves of (clipped noise − 0.25) / 2^i at 2^i × q. */
+/* wrinkles: 10 octaves of turb_noise / 2 / 2^i at 2^i × q. */
 PATTERN_FN(wrinkles)
 {
 	int gen = gen_of(pt, ctx);
 	double sum = 0, freq = 1;
 	for (int i = 0; i < 10; i++, freq *= 2)
-		sum += (clipped_noise(v3_scale(q, freq), gen) - 0.25) / freq;
+		sum += 0.5 * turb_noise(v3_scale(q, freq), gen) / freq;
 	return sum;
 }
 
@@ -89,33 +97,41 @@ PATTERN_FN(wood)
 	return sqrt(q.x * q.x + q.y * q.y) + value_turbulence(pt, q, gen_of(pt, ctx));
 }
 
-/* agate: ((1 + sin(2π × 1.1 × u)) / 2)^0.77 with u = z plus agate_turb ×
- * its own turbulence (the z-profile was measured; the turbulence is ours:
- * the scalar turbulence with omega 0.7, lambda 2, 6 octaves, doubled). */
+/* agate: ((1 + sin(2π × 1.1 × u)) / 2)^0.77 with u = z + 26/11 ×
+ * agate_turb × the scalar turbulence at q, with the pattern's octaves,
+ * omega and lambda (default 6, 0.5, 2). Measured: with a small agate_turb
+ * the phase moves by exactly 26/11 (to 1e-6) times the turbulence, for
+ * generators 1 and 2 and other octaves, omega and lambda; `turbulence`
+ * moves the point (POV-Ray gives the same values as with warp { turbulence }). */
 PATTERN_FN(agate)
 {
-	static const struct turbulence at = {{1, 1, 1}, 6, 0.7, 2.0};
-	int gen = gen_of(pt, ctx);
-	double u = q.z + pt->f[0] * 2.0 * turbulence1(q, &at, gen) + value_turbulence(pt, q, gen);
+	double agate_turb = (float)pt->f[0];          /* single precision in POV-Ray (measured) */
+	double u = q.z + agate_turb * (26.0 / 11.0) * turbulence1(q, &pt->turb, gen_of(pt, ctx));
 	double s = (1.0 + sin(2 * M_PI * 1.1 * u)) * 0.5;
 	return pow(s < 0 ? 0 : s, 0.77);
 }
 
-/* ---- wave sources (ripples, waves) ---- */
+/* ---- wave sources (ripples, waves) ----
+ * POV-Ray's wave sources: source i is a unit vector w_i and a frequency
+ * f_i (only waves uses it); both the value and the normal measure the
+ * distance from the pattern-space point to w_i. Measured from POV-Ray 3.7
+ * renders with global_settings { number_of_waves K } for K = 1, 2, ...:
+ * each K adds one source and keeps the others, so they were fitted one at
+ * a time (ripples at two heights for the centre, waves for the frequency;
+ * the orthographic camera looking straight down that was used shows the
+ * image mirrored in x in POV-Ray, which the fits allowed for). The first
+ * ten were then refined against function { pattern { ripples } } and
+ * { waves } as POV-Ray prints them while parsing (the same sources), to
+ * 1e-15 (wave_sources.inc). */
 
-#define MAX_WAVES 32
+static const struct wave_source {
+	vec3 w;
+	double f;
+} wave_sources[] = {
+#include "pattern/wave_sources.inc"
+};
 
-/* The i-th wave source: a point in the unit cube and a size factor, fixed
- * for every scene (from the noise, sampled far from the origin). */
-static vec3 wave_source(int i, double *size)
-{
-	vec3 s = v3(37.5 + 3.1 * i, 91.25 - 1.7 * i, 13.75 + 2.3 * i);
-	vec3 d = dnoise3(s, 2);
-	vec3 c = v3(0.5 + d.x, 0.5 + d.y, 0.5 + d.z);
-	c = v3(c.x - floor(c.x), c.y - floor(c.y), c.z - floor(c.z));
-	*size = 0.5 + noise3(v3_scale(s, 1.37), 2);
-	return c;
-}
+#define MAX_WAVES ((int)(sizeof wave_sources / sizeof wave_sources[0]))
 
 static int wave_count(const struct pattern_ctx *ctx)
 {
@@ -123,34 +139,31 @@ static int wave_count(const struct pattern_ctx *ctx)
 	return n > MAX_WAVES ? MAX_WAVES : n;
 }
 
-/* ripples: the mean of frac(distance to each source), folded into [0, 1]. */
+/* ripples and waves use the pattern's frequency F and phase P inside the
+ * sine, and then (like every pattern) on the value too (measured; both in
+ * single precision, as POV-Ray keeps them). */
+
+/* ripples: the mean over the sources of 0.5 + 0.5 sin(2π (F d + P)). */
 PATTERN_FN(ripples)
 {
-	(void)pt;
 	int n = wave_count(ctx);
-	double sum = 0;
-	for (int i = 0; i < n; i++) {
-		double size;
-		double d = v3_len(v3_sub(q, wave_source(i, &size)));
-		sum += 0.5 + 0.5 * sin(2 * M_PI * d);
-	}
+	double sum = 0, F = (float)pt->frequency, P = (float)pt->phase;
+	for (int i = 0; i < n; i++)
+		sum += 0.5 + 0.5 * sin(2 * M_PI * (F * v3_len(v3_sub(q, wave_sources[i].w)) + P));
 	return sum / n;
 }
 
-/* waves: broader, rounder: cosines of the distance, each source weighted
- * by its size, mapped into [0, 1]. */
+/* waves: 0.5 plus the mean over the sources of
+ * 0.2 sin(2π (f F d + P)) / f. */
 PATTERN_FN(waves)
 {
-	(void)pt;
 	int n = wave_count(ctx);
-	double sum = 0, wsum = 0;
+	double sum = 0, F = (float)pt->frequency, P = (float)pt->phase;
 	for (int i = 0; i < n; i++) {
-		double size;
-		double d = v3_len(v3_sub(q, wave_source(i, &size)));
-		sum += size * cos(2 * M_PI * d);
-		wsum += size;
+		double f = wave_sources[i].f;
+		sum += 0.2 * sin(2 * M_PI * (f * F * v3_len(v3_sub(q, wave_sources[i].w)) + P)) / f;
 	}
-	return 0.5 + 0.5 * sum / wsum;
+	return 0.5 + sum / n;
 }
 
 /* ---- cells, crackle ---- */
@@ -285,23 +298,48 @@ PATTERN_FN(facets)
 
 /* ---- special normal perturbations ---- */
 
-static vec3 ripple_gradient(vec3 q, const struct pattern *pt, const struct pattern_ctx *ctx, bool waves)
+/* The push of the ripples and waves normals: the mean over the sources of
+ * s × (q − w_i) / |q − w_i|, s = sin(2π (F d + P)) for ripples and
+ * sin(2π (f F d + P)) / f for waves, F and P the pattern's frequency and
+ * phase (measured like bumps, kinds.h; one source, then ten). */
+static vec3 ripple_push(vec3 q, const struct pattern *pt, const struct pattern_ctx *ctx, bool waves)
 {
 	int n = wave_count(ctx);
-	double freq = pt->frequency != 0 ? pt->frequency : 1;
 	vec3 g = v3(0, 0, 0);
 	for (int i = 0; i < n; i++) {
-		double size;
-		vec3 c = wave_source(i, &size);
-		vec3 d = v3_sub(q, c);
+		vec3 d = v3_sub(q, wave_sources[i].w);
 		double r = v3_len(d);
-		if (r < 1e-9)
+		if (r == 0)
 			continue;
-		double arg = 2 * M_PI * (r * freq + pt->phase);
-		double s = waves ? -sin(arg) * size : cos(arg);
-		g = v3_madd(g, d, s / r);
+		double f = waves ? wave_sources[i].f : 1;
+		double F = (float)pt->frequency, P = (float)pt->phase;
+		g = v3_madd(g, d, sin(2 * M_PI * (f * F * r + P)) / f / r);
 	}
 	return v3_scale(g, 1.0 / n);
+}
+
+static vec3 unit_or(vec3 v, vec3 fallback)
+{
+	double l = v3_len(v);
+	return l > 0 ? v3_scale(v, 1.0 / l) : fallback;
+}
+
+/* A world-space normal carried into pattern space through the pattern's
+ * transformations (the warps leave it alone), and back. */
+static vec3 normal_to_pattern(const struct pattern *pt, vec3 n)
+{
+	for (int i = pt->nops - 1; i >= 0; i--)
+		if (pt->ops[i].kind == POP_TRANSFORM)
+			n = mat_normal(&pt->ops[i].xf.fwd, n);
+	return n;
+}
+
+static vec3 normal_from_pattern(const struct pattern *pt, vec3 n)
+{
+	for (int i = 0; i < pt->nops; i++)
+		if (pt->ops[i].kind == POP_TRANSFORM)
+			n = mat_normal(&pt->ops[i].xf.inv, n);
+	return n;
 }
 
 bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec3 n,
@@ -316,19 +354,22 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		break;
 	case PAT_DENTS: {
 		double s = noise3(q, gen);
-		d = v3_scale(dnoise3(q, gen), -amount * s * s * s * 2);
+		d = v3_scale(dnoise3(q, gen), amount * s * s * s);
 		break;
 	}
 	case PAT_WRINKLES: {
+		/* 10 octaves of |DNoise| per component (measured) */
 		d = v3(0, 0, 0);
 		double amp = 1, freq = 1;
-		for (int i = 0; i < 10; i++, amp *= 0.5, freq *= 2)
-			d = v3_madd(d, dnoise3(v3_scale(q, freq), gen), amp);
+		for (int i = 0; i < 10; i++, amp *= 0.5, freq *= 2) {
+			vec3 o = dnoise3(v3_scale(q, freq), gen);
+			d = v3_madd(d, v3(fabs(o.x), fabs(o.y), fabs(o.z)), amp);
+		}
 		d = v3_scale(d, amount);
 		break;
 	}
 	case PAT_RIPPLES: case PAT_WAVES:
-		d = v3_scale(ripple_gradient(q, pt, ctx, pt->kind == PAT_WAVES), amount);
+		d = v3_scale(ripple_push(q, pt, ctx, pt->kind == PAT_WAVES), amount);
 		break;
 	case PAT_FACETS: {
 		/* facets size F: the normal quantised to a grid of cell size F and
@@ -342,14 +383,18 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 			crackle_search(v3_scale(n, 1.0 / size), 2, 0, &nr);
 		vec3 r = dnoise3(v3_add(nr.point, v3(0.5, 0.5, 0.5)), gen);
 		d = v3_scale(r, amount);
-		break;
+		/* only the part across the surface tilts it */
+		d = v3_madd(d, n, -v3_dot(d, n));
+		vec3 m = v3_norm(v3_add(n, d));
+		*out = v3_len(m) > 0 ? m : n;
+		return true;
 	}
 	default:
 		return false;
 	}
-	/* only the part of the push across the surface tilts the normal */
-	d = v3_madd(d, n, -v3_dot(d, n));
-	vec3 m = v3_norm(v3_add(n, d));
-	*out = v3_len(m) > 0 ? m : n;
+	/* The push is added in pattern space, along n too (measured, kinds.h). */
+	vec3 np = unit_or(normal_to_pattern(pt, n), n);
+	vec3 m = normal_from_pattern(pt, v3_add(np, d));
+	*out = unit_or(m, n);
 	return true;
 }

@@ -10,7 +10,7 @@
  * than applying to the point (see noisy.c). */
 static bool turbulence_in_value(enum pattern_kind k)
 {
-	return k == PAT_AGATE || k == PAT_MARBLE || k == PAT_WOOD || k == PAT_SPIRAL1 ||
+	return k == PAT_MARBLE || k == PAT_WOOD || k == PAT_SPIRAL1 ||
 	       k == PAT_SPIRAL2;
 }
 

@@ -14,9 +14,9 @@
  *     grooves (and with a whole number of loops) only;
  *   - f_mesh1 matches for positive thread spacings only.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
- * noise3), and so is f_hetero_mf (tests/lang/stdlib-functions-noise);
- * f_ridge (with an offset other than 1) and f_ridged_mf (for most
- * parameters) have POV-Ray's range and character but not its values.
+ * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
+ * stdlib-functions-noise); f_ridged_mf (for most parameters) has POV-Ray's
+ * range and character but not its values.
  *
  * Conventions that many functions share:
  *   - "field strength" functions return P0 times a polynomial, clamped to
@@ -879,20 +879,38 @@ static double f_hetero_mf(const double *a)
 }
 
 /* Ridged noise: P0 lambda (the lacunarity), P1 octaves, P2 omega (the
- * gain of each octave), P3 offset, P4 ridge, P5 generator. Each octave adds
- * omega^i ((1 - offset) - noise) / ridge, noise in [0, 1], and the sum is
- * divided by the sum of the omega^i: for one octave with offset 0 or 1 this
- * is POV-Ray's shape (1 - noise or -noise over ridge), and the sums have
- * about POV-Ray's range. */
+ * gain of each octave), P3 offset, P4 ridge, P5 generator. Measured
+ * against POV-Ray 3.7 (one octave, then several, over offsets, ridges and
+ * fractional octaves; to 1e-10):
+ *   - each octave's noise n is folded at the ridge r into a tent,
+ *     t = 1 - |n - r| / max(r, 1 - r) (a ridge of 1 or more leaves n / r);
+ *   - the offset o maps t linearly: 1 - t / (1 - o) for o up to 0.5,
+ *     (1 - t) / o - 1 above;
+ *   - the octaves are averaged with weights omega^i; the first always
+ *     counts in full, and a fractional part f of the octaves gives the
+ *     octave after the whole ones (after the first, below 1) weight
+ *     f omega^i, negative octaves included (f < 0 there). */
+static double ridge_octave(double n, double off, double r)
+{
+	double t = 1 - fabs(n - r) / fmax(r, 1 - r);
+	return off <= 0.5 ? 1 - t / (1 - off) : (1 - t) / off - 1;
+}
+
 static double f_ridge(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
-	double lambda = a[3], oct = a[4], omega = a[5], off = a[6], ridge = a[7];
-	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
-	double v = 0, amp = 1, total = 0;
-	for (int i = 0; i < octaves || i == 0; i++) {
-		v += amp * ((1 - off) - noise_gen(x, y, z, gen)) / ridge;
-		total += amp;
+	double lambda = a[3], oct = a[4], omega = a[5], off = a[6], r = a[7];
+	int gen = to_int(a[8], 1 << 20);
+	double limit = oct < 64 ? oct : 64;
+	int whole = limit >= 1 ? (int)limit : 1;
+	double frac = limit - (int)limit;
+	double v = 0, total = 0, amp = 1;
+	for (int i = 0; i <= whole; i++) {
+		double w = i < whole ? amp : frac * amp;
+		if (w != 0) {
+			v += w * ridge_octave(noise_gen(x, y, z, gen), off, r);
+			total += w;
+		}
 		amp *= omega;
 		x *= lambda;
 		y *= lambda;

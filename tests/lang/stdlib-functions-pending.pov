@@ -1,25 +1,22 @@
 // functions.inc: the functions whose values lucent does not share with
 // POV-Ray yet (listed in pending.list): f_noise_generator with generator 3
 // (the bozo pattern's generator 3 differs too), f_comma and f_helical_torus
-// (approximations), the agate, crackle, ripples and waves patterns, and
-// f_ridge (offset other than 1) and f_ridged_mf (most parameters).
+// (approximations), and f_ridged_mf (most parameters); agate, crackle,
+// f_ridge (stdlib-functions-ridge), ripples and waves
+// (stdlib-functions-waves) match.
 #version 3.7;
 #include "functions.inc"
 #macro S(N, V) #debug concat(N, " ", str(V, 0, 6), "\n") #end
 #declare P = <0.3, 0.7, 1.1>;
-S("ridge", f_ridge(P.x, P.y, P.z, 2.5, 3.5, 0.6, 0.3, 1.5, 1))
 S("ridged_mf", f_ridged_mf(P.x, P.y, P.z, 0.5, 2, 3, 0.9, 2, 2))
 #declare Pts = array[4] {<0.3,0.7,1.1>, <-1.25,0.4,2.3>, <0.05,-0.6,-0.35>, <2.7,1.3,-0.8>}
 #for (I, 0, 3)
 #declare P = Pts[I];
 S("agate", f_agate(P.x,P.y,P.z))
 S("crackle", f_crackle(P.x,P.y,P.z))
-S("ripples", f_ripples(P.x,P.y,P.z))
-S("waves", f_waves(P.x,P.y,P.z))
 S("ng3", f_noise_generator(P.x,P.y,P.z,3))
 S("comma", f_comma(P.x, P.y, P.z, 1))
 S("helical_torus", f_helical_torus(P.x, P.y, P.z, 1, 0.5, 0.3, 0.8, 0.2, 1.5, 0.7, 0.4, 0.6, 0.9))
 #end
 #declare P = <0.3, 0.7, 1.1>;
-S("ridge", f_ridge(P.x, P.y, P.z, 2.5, 3.5, 0.6, 0.3, 1.5, 1))
 S("ridged_mf", f_ridged_mf(P.x, P.y, P.z, 0.5, 2, 3, 0.9, 2, 2))

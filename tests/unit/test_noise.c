@@ -172,6 +172,78 @@ static void test_patterns_measured(void **state)
 	assert_near(raw_at(&wd, v3(3, 4, 9)), 5, 1e-12);
 }
 
+/* granite, wrinkles and marble's turbulence with noise_generator 1, as
+ * POV-Ray 3.7.0 prints them for
+ *   function { pattern { wrinkles noise_generator 1 } },
+ *   { granite noise_generator 1 }, { marble turbulence 0.7 noise_generator 1 }
+ * at these points (divided by 3 as in the scene); the last is a point
+ * where the generator-1 noise clamps at 1. They use the noise itself
+ * where generator 2 uses twice the noise less 0.5, clipped. */
+static void test_generator1_patterns(void **state)
+{
+	(void)state;
+	static const struct { double x, y, z, w, g, m; } c[] = {
+		{2.031306, -9.361354, 9.918965, 0.5039597987, 0.3172673197, 0.7455978781},
+		{5.792288, 3.218807, -4.152747, 0.4372805652, 0.2287096058, 0.9272388920},
+		{-8.399916, 2.727385, -8.792391, 0.4535645259, 0.5544242093, 0.3537332160},
+		{5.154232, 9.161627, 7.015720, 0.7545779428, 0.2807289623, 0.4785758032},
+		{-2.082416, 1.627608, -4.395758, 0.5140616018, 0.6633787196, 0.0372135324},
+	};
+	struct pattern g = pattern_make(PAT_GRANITE), w = pattern_make(PAT_WRINKLES), m = pattern_make(PAT_MARBLE);
+	g.noise_generator = w.noise_generator = m.noise_generator = 1;
+	m.has_turbulence = true;
+	m.turb.amount = v3(0.7, 0.7, 0.7);
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern_ctx ctx = ctx_at(v3(c[i].x / 3, c[i].y / 3, c[i].z / 3));
+		assert_near(pattern_value(&w, &ctx), c[i].w, TOL);
+		assert_near(pattern_value(&g, &ctx), c[i].g, TOL);
+		assert_near(pattern_value(&m, &ctx), c[i].m, TOL);
+	}
+	/* the first octave's noise clamped at 1 (raw 1.08): marble turbulence
+	 * 0.5 octaves 1 adds 1/2 (POV-Ray: 0.0000500000, i.e. x + 0.5 wrapped
+	 * by ramp_wave's 1.00001) */
+	struct pattern m1 = pattern_make(PAT_MARBLE);
+	m1.noise_generator = 1;
+	m1.has_turbulence = true;
+	m1.turb.amount = v3(0.5, 0.5, 0.5);
+	m1.turb.octaves = 1;
+	m1.wave = WAVE_RAMP;
+	assert_near(raw_at(&m1, v3(5.154232, 9.161627, 7.015720)), 5.154232 + 0.5, 1e-9);
+}
+
+/* agate as POV-Ray 3.7.0 prints it for function { pattern { agate } },
+ * { agate agate_turb 0.3 }, { agate turbulence 0.3 } and
+ * { agate agate_turb 0.01 octaves 3 } (its own turbulence takes the
+ * pattern's octaves; `turbulence` moves the point). */
+static void test_agate_measured(void **state)
+{
+	(void)state;
+	static const struct { double x, y, z, v[4]; } c[] = {
+		{0.3, 0.7, 1.1, {0.6091121768, 0.0000613103, 0.7121282613, 0}},
+		{-1.25, 0.4, 2.3, {0.3041154618, 0.4171510035, 0.3133504117, 0}},
+		{0.05, -0.6, -0.35, {0.0260655935, 0.4835972691, 0.0169681402, 0}},
+		{2.7, 1.3, -0.8, {0.3672281373, 0.4218382181, 0.0166465379, 0}},
+		{2.031306 / 3, -9.361354 / 3, 9.918965 / 3, {-1, -1, -1, 0.166992157638}},
+		{5.792288 / 3, 3.218807 / 3, -4.152747 / 3, {-1, -1, -1, 0.619534629642}},
+	};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		for (int k = 0; k < 4; k++) {
+			if (c[i].v[k] < 0 || (k == 3) != (i >= 4))
+				continue;
+			struct pattern a = pattern_make(PAT_AGATE);
+			a.f[0] = k == 1 ? 0.3 : k == 3 ? 0.01 : 1;
+			if (k == 2) {
+				a.has_turbulence = true;
+				a.turb.amount = v3(0.3, 0.3, 0.3);
+			}
+			if (k == 3)
+				a.turb.octaves = 3;
+			struct pattern_ctx ctx = ctx_at(v3(c[i].x, c[i].y, c[i].z));
+			assert_near(pattern_value(&a, &ctx), c[i].v[k], TOL);
+		}
+	}
+}
+
 static vec3 warp1(const struct pattern_op *op, vec3 p)
 {
 	struct pattern pt = pattern_make(PAT_BOZO);
@@ -400,6 +472,64 @@ static void test_ripples_waves_character(void **state)
 	}
 }
 
+/* ripples and waves as POV-Ray 3.7.0 renders them with 10 wave sources:
+ * a plane at y = 0 seen from above (orthographic, 160 x 160 over
+ * [-2, 3] x [-2, 3], an image POV-Ray mirrors in x: the points below are
+ * the world points of the pixels) with pigment { K [frequency F phase P] color_map
+ * { [0 rgb 0] [1 rgb 1] } }, ambient 1, written as a linear 16-bit PPM:
+ * the values below are pixels of those images, so within 2/65535 plus
+ * the sources' measurement error (6e-5 in all). The normals: plane { z, 0 }
+ * seen from -z with normal { K 0.5 [frequency F phase P] }, solved from
+ * three coloured lights as for bumps (test_special_normals), at
+ * (0.03125, 0.96875, 0). */
+static void test_ripples_waves_measured(void **state)
+{
+	(void)state;
+	static const struct { enum pattern_kind k; double F, P; double v[3]; vec3 n; } c[] = {
+		{PAT_RIPPLES, 1, 0, {0.5121843, 0.5704128, 0.3793240}, {0.01039, -0.22515, -0.97426}},
+		{PAT_WAVES, 1, 0, {0.3769894, 0.6744488, 0.3390860}, {-0.13464, 0.18066, -0.97427}},
+		{PAT_RIPPLES, 2, 0.3, {0.7712520, 0.2921493, 0.3875181}, {0.07367, -0.01793, -0.99710}},
+		{PAT_WAVES, 0.7, 0.2, {0.4427558, 0.6098421, 0.4301976}, {-0.22773, 0.13565, -0.96422}},
+	};
+	static const vec3 pts[3] = {{2.890625, 0, 2.828125}, {0.578125, 0, -0.765625}, {-1.390625, 0, 1.953125}};
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern pt = pattern_make(c[i].k);
+		pt.frequency = c[i].F;
+		pt.phase = c[i].P;
+		for (int j = 0; j < 3; j++) {
+			struct pattern_ctx ctx = ctx_at(pts[j]);
+			assert_near(pattern_value(&pt, &ctx), c[i].v[j], 6e-5);
+		}
+		struct pattern_ctx ctx = ctx_at(v3(0.03125, 0.96875, 0));
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 0.5, ctx.p, v3(0, 0, -1), &ctx, &out));
+		assert_vec_near(out, c[i].n.x, c[i].n.y, c[i].n.z, 4e-5);
+		pattern_clear(&pt);
+	}
+}
+
+/* ripples and waves to POV-Ray's printed digits: POV-Ray 3.7.0's
+ *   #declare F = function { pattern { ripples } }   (and waves)
+ *   #debug concat(str(F(x, y, z), 0, 16), "\n")
+ * at random points (its first ten wave sources were fitted to 300 such
+ * values, wave_sources.inc). */
+static void test_ripples_waves_exact(void **state)
+{
+	(void)state;
+	static const double c[][5] = {
+		{-0.285723, 0.358634, 2.545264, 0.7991793230897866, 0.4513831025835261},
+		{-0.2061, 0.047048, 0.524309, 0.7114684459881367, 0.7419058889913398},
+		{-1.892038, 0.071452, 0.779296, 0.4030254248907793, 0.3088984131599550},
+		{1.757861, -2.435259, -1.179592, 0.6386847570729439, 0.4015832847579525},
+	};
+	struct pattern r = pattern_make(PAT_RIPPLES), w = pattern_make(PAT_WAVES);
+	for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+		struct pattern_ctx ctx = ctx_at(v3(c[i][0], c[i][1], c[i][2]));
+		assert_near(pattern_value(&r, &ctx), c[i][3], 1e-12);
+		assert_near(pattern_value(&w, &ctx), c[i][4], 1e-12);
+	}
+}
+
 /* number_of_waves (pattern_ctx.number_of_waves, from global_settings)
  * changes the sources of ripples and waves; 0 means POV-Ray's 10. */
 static void test_number_of_waves(void **state)
@@ -430,6 +560,30 @@ static void test_special_normals(void **state)
 		assert_true(pattern_special_normal(&pt, 0, c.p, n, &c, &out));
 		assert_vec_near(out, 0, 1, 0, 1e-12);
 	}
+	/* POV-Ray's normals for plane { z, 0 } seen from -z with normal { N },
+	 * at (0.03125, 0.96875, 0): rendered lit by three coloured parallel
+	 * lights at <1,0,-1>, <0,1,-1>, <0,0,-1> (16-bit linear PPM) and solved
+	 * for the normal, so within 3e-5 */
+	static const struct { enum pattern_kind k; double sx, rz; vec3 want; } m[] = {
+		{PAT_BUMPS, 1, 0, {-0.05582, -0.04792, -0.99727}},      /* bumps 0.5 */
+		{PAT_DENTS, 1, 0, {-0.00568, -0.00488, -0.99995}},      /* dents 0.5 */
+		{PAT_BUMPS, 0.5, 0, {-0.09130, -0.06377, -0.99376}},    /* bumps 0.5 scale <0.5, 1, 1> */
+		{PAT_BUMPS, 1, 30, {0.04667, -0.29223, -0.95520}},      /* bumps 0.5 rotate 30*z */
+		{PAT_WRINKLES, 1, 0, {0.19185, 0.15821, -0.96857}},    /* wrinkles 0.5 */
+	};
+	for (size_t i = 0; i < sizeof m / sizeof m[0]; i++) {
+		struct pattern pt = pattern_make(m[i].k);
+		struct xform t = xform_scale(v3(m[i].sx, 1, 1));
+		if (m[i].rz != 0)
+			t = xform_rotate(v3(0, 0, m[i].rz));
+		pattern_transform(&pt, &t);
+		struct pattern_ctx c = ctx_at(v3(0.03125, 0.96875, 0));
+		c.noise_generator = 2;
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 0.5, c.p, v3(0, 0, -1), &c, &out));
+		assert_vec_near(out, m[i].want.x, m[i].want.y, m[i].want.z, 3e-5);
+		pattern_clear(&pt);
+	}
 	struct pattern g = pattern_make(PAT_GRANITE);
 	struct pattern_ctx c = ctx_at(v3(0, 0, 0));
 	vec3 out;
@@ -441,6 +595,10 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_noise_generators_1_2),
 		cmocka_unit_test(test_noise_generator1_clips),
+		cmocka_unit_test(test_generator1_patterns),
+		cmocka_unit_test(test_agate_measured),
+		cmocka_unit_test(test_ripples_waves_measured),
+		cmocka_unit_test(test_ripples_waves_exact),
 		cmocka_unit_test(test_noise_character),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
