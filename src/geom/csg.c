@@ -10,7 +10,15 @@
  * The closest hit of merge, intersection and difference walks the
  * crossings of one group of children in increasing t and keeps the first
  * that lies on the result's boundary, judged by inside tests of the other
- * children, as POV-Ray does. */
+ * children, as POV-Ray does.
+ *
+ * Inverting a CSG follows De Morgan, as in POV-Ray: an inverted union is
+ * the intersection of its inverted children, which keeps only the union's
+ * outer surface; inverted again it becomes a merge of the children, never a
+ * union. So a union under any inversion (its own `inverse`, an ancestor's,
+ * or the place of a subtracted child of a difference, at any depth) walks
+ * its crossings as a merge does (`as_merge`, set by csg_settle). Inverted
+ * intersections, merges and differences keep the crossings they had. */
 #include "geom/csg.h"
 
 #include "accel/bvh.h"
@@ -35,6 +43,8 @@ struct csg {
 	struct object base;
 	enum csg_kind kind;
 	bool split;              /* union: may be split into the scene's BVH */
+	bool as_merge;           /* union under an inversion: no inner surfaces */
+	bool settled;            /* everything below was inverted: as_merge set */
 	struct object **kids;    /* owned */
 	size_t n, cap;
 	struct group g;          /* union/merge: all; difference: kids[1..] */
@@ -179,7 +189,7 @@ static bool csg_intersect(const struct object *o, const struct ray *r, double tm
 {
 	const struct csg *c = (const struct csg *)o;
 	const struct object *top;
-	switch (c->kind) {
+	switch (c->as_merge ? CSG_MERGE : c->kind) {
 	case CSG_UNION:
 		return group_closest(&c->g, r, tmin, tmax, h, &top);
 	case CSG_MERGE:
@@ -341,6 +351,22 @@ static const struct object_ops csg_ops = {
 	.destroy = csg_destroy,
 };
 
+/* o lies under an inversion: every union in it, o included, keeps only
+ * its outer surface. */
+static void mark_inverted(struct object *o)
+{
+	if (o->ops != &csg_ops)
+		return;
+	struct csg *c = (struct csg *)o;
+	if (c->settled)
+		return; /* its subtree was marked before */
+	c->settled = true;
+	if (c->kind == CSG_UNION)
+		c->as_merge = true;
+	for (size_t i = 0; i < c->n; i++)
+		mark_inverted(c->kids[i]);
+}
+
 struct object *csg_new(enum csg_kind kind, struct srcpos pos)
 {
 	struct csg *c = calloc(1, sizeof *c);
@@ -360,6 +386,8 @@ void csg_add(struct object *o, struct object *child)
 		if (!c->kids) abort();
 	}
 	c->kids[c->n++] = child;
+	if ((c->kind == CSG_DIFFERENCE && c->n > 1) || (child->flags & OBJ_INVERSE))
+		mark_inverted(child);
 	/* The hierarchy, if any, no longer covers every child. */
 	group_clear(&c->g);
 	set_group(c);
@@ -374,6 +402,20 @@ bool csg_kind_of(const struct object *o, enum csg_kind *kind)
 	return true;
 }
 
+void csg_settle(struct object *o)
+{
+	if (o->ops != &csg_ops)
+		return;
+	struct csg *c = (struct csg *)o;
+	if (o->flags & OBJ_INVERSE) {
+		mark_inverted(o);
+		return;
+	}
+	for (size_t i = 0; i < c->n; i++)
+		if ((c->kind == CSG_DIFFERENCE && i > 0) || (c->kids[i]->flags & OBJ_INVERSE))
+			mark_inverted(c->kids[i]);
+}
+
 void csg_set_split(struct object *o, bool split)
 {
 	((struct csg *)o)->split = split;
@@ -384,5 +426,5 @@ bool csg_splittable(const struct object *o)
 	if (o->ops != &csg_ops)
 		return false;
 	const struct csg *c = (const struct csg *)o;
-	return c->kind == CSG_UNION && c->split && !o->clip && !o->bound && !(o->flags & OBJ_INVERSE);
+	return c->kind == CSG_UNION && !c->as_merge && c->split && !o->clip && !o->bound && !(o->flags & OBJ_INVERSE);
 }

@@ -1044,6 +1044,9 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		o->bound = o->clip;
 	if (s.flags)
 		object_set_flags(o, s.flags);
+	/* Unions under an inversion lose their inner surfaces (csg.h). */
+	if (csg_kind_of(o, NULL))
+		csg_settle(o);
 	/* A CSG's texture goes to the children that have none (also when it
 	 * is given to object { CsgIdentifier }). */
 	if (csg_kind_of(o, NULL) && o->tex)
