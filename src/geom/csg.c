@@ -45,6 +45,8 @@ struct csg {
 	bool split;              /* union: may be split into the scene's BVH */
 	bool as_merge;           /* union under an inversion: no inner surfaces */
 	bool settled;            /* everything below was inverted: as_merge set */
+	struct aabb box;         /* world bounds kept since the first transform */
+	bool boxed;              /* box is set (else computed from the children) */
 	struct object **kids;    /* owned */
 	size_t n, cap;
 	struct group g;          /* union/merge: all; difference: kids[1..] */
@@ -257,9 +259,9 @@ static vec3 csg_normal(const struct object *o, vec3 p, const struct hit *h)
 	return v3(0, 1, 0);
 }
 
-static struct aabb csg_bounds(const struct object *o)
+/* The bounds the children give now. */
+static struct aabb children_bounds(const struct csg *c)
 {
-	const struct csg *c = (const struct csg *)o;
 	struct aabb b = aabb_empty();
 	switch (c->kind) {
 	case CSG_UNION:
@@ -287,6 +289,28 @@ static struct aabb csg_bounds(const struct object *o)
 	}
 	}
 	return b;
+}
+
+static struct aabb csg_bounds(const struct object *o)
+{
+	const struct csg *c = (const struct csg *)o;
+	return c->boxed ? c->box : children_bounds(c);
+}
+
+/* Before the first transform the box comes from the children; from then on
+ * that box is moved with the object, as POV-Ray does (measured: six axis
+ * planes rotated 45 degrees about y give x, z in +-1.414214; rotated back,
+ * +-2; a union's box is its own box moved, not its moved children's). An
+ * infinite box stays infinite. */
+static void csg_transform_bounds(struct object *o, const struct xform *t)
+{
+	struct csg *c = (struct csg *)o;
+	if (!c->boxed) {
+		c->box = children_bounds(c);
+		c->boxed = true;
+	}
+	if (aabb_is_finite(c->box))
+		c->box = mat_bounds(&t->fwd, c->box);
 }
 
 static size_t csg_children(struct object *o, struct object ***kids)
@@ -346,6 +370,7 @@ static const struct object_ops csg_ops = {
 	.normal = csg_normal,
 	.bounds = csg_bounds,
 	.children = csg_children,
+	.transform_bounds = csg_transform_bounds,
 	.prepare = csg_prepare,
 	.copy = csg_copy,
 	.destroy = csg_destroy,
@@ -386,6 +411,7 @@ void csg_add(struct object *o, struct object *child)
 		if (!c->kids) abort();
 	}
 	c->kids[c->n++] = child;
+	c->boxed = false; /* a part after a transform (lucent only): from the parts */
 	if ((c->kind == CSG_DIFFERENCE && c->n > 1) || (child->flags & OBJ_INVERSE))
 		mark_inverted(child);
 	/* The hierarchy, if any, no longer covers every child. */

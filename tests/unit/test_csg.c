@@ -240,6 +240,27 @@ static void test_plane_extents(void **state)
 	assert_vec_near(b.hi, -0.5, 1, 1, 1e-15);
 	object_free(d);
 
+	/* Rotated as a whole, the cube keeps its box, rotated (POV-Ray:
+	 * x, z in +-1.414214); rotated back, the box of that box (+-2). */
+	cube = csg_new(CSG_INTERSECTION, nopos);
+	for (int a = 0; a < 3; a++)
+		for (int s = -1; s <= 1; s += 2)
+			csg_add(cube, plane_new(v3(a == 0 ? s : 0, a == 1 ? s : 0, a == 2 ? s : 0), 1, nopos));
+	struct xform ry = xform_rotate(v3(0, 45, 0)), ryb = xform_rotate(v3(0, -45, 0));
+	object_transform(cube, &ry);
+	b = object_world_bounds(cube);
+	assert_vec_near(b.lo, -sqrt(2), -1, -sqrt(2), 1e-12);
+	assert_vec_near(b.hi, sqrt(2), 1, sqrt(2), 1e-12);
+	struct object *cc = object_copy(cube);
+	object_transform(cube, &ryb);
+	b = object_world_bounds(cube);
+	assert_vec_near(b.lo, -2, -1, -2, 1e-12);
+	assert_vec_near(b.hi, 2, 1, 2, 1e-12);
+	b = object_world_bounds(cc); /* the copy keeps its own box */
+	assert_vec_near(b.hi, sqrt(2), 1, sqrt(2), 1e-12);
+	object_free(cc);
+	object_free(cube);
+
 	struct object *e = csg_new(CSG_INTERSECTION, nopos);
 	csg_add(e, sphere_new(v3(0, 0, 0), 1, nopos));
 	csg_add(e, plane_new(v3(0, 1, 0), -5, nopos));
