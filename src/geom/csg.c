@@ -10,7 +10,15 @@
  * The closest hit of merge, intersection and difference walks the
  * crossings of one group of children in increasing t and keeps the first
  * that lies on the result's boundary, judged by inside tests of the other
- * children, as POV-Ray does. */
+ * children, as POV-Ray does.
+ *
+ * Inverting a CSG follows De Morgan, as in POV-Ray: an inverted union is
+ * the intersection of its inverted children, which keeps only the union's
+ * outer surface; inverted again it becomes a merge of the children, never a
+ * union. So a union under any inversion (its own `inverse`, an ancestor's,
+ * or the place of a subtracted child of a difference, at any depth) walks
+ * its crossings as a merge does (`as_merge`, set by csg_settle). Inverted
+ * intersections, merges and differences keep the crossings they had. */
 #include "geom/csg.h"
 
 #include "accel/bvh.h"
@@ -35,6 +43,10 @@ struct csg {
 	struct object base;
 	enum csg_kind kind;
 	bool split;              /* union: may be split into the scene's BVH */
+	bool as_merge;           /* union under an inversion: no inner surfaces */
+	bool settled;            /* everything below was inverted: as_merge set */
+	struct aabb box;         /* world bounds kept since the first transform */
+	bool boxed;              /* box is set (else computed from the children) */
 	struct object **kids;    /* owned */
 	size_t n, cap;
 	struct group g;          /* union/merge: all; difference: kids[1..] */
@@ -179,7 +191,7 @@ static bool csg_intersect(const struct object *o, const struct ray *r, double tm
 {
 	const struct csg *c = (const struct csg *)o;
 	const struct object *top;
-	switch (c->kind) {
+	switch (c->as_merge ? CSG_MERGE : c->kind) {
 	case CSG_UNION:
 		return group_closest(&c->g, r, tmin, tmax, h, &top);
 	case CSG_MERGE:
@@ -247,9 +259,9 @@ static vec3 csg_normal(const struct object *o, vec3 p, const struct hit *h)
 	return v3(0, 1, 0);
 }
 
-static struct aabb csg_bounds(const struct object *o)
+/* The bounds the children give now. */
+static struct aabb children_bounds(const struct csg *c)
 {
-	const struct csg *c = (const struct csg *)o;
 	struct aabb b = aabb_empty();
 	switch (c->kind) {
 	case CSG_UNION:
@@ -277,6 +289,28 @@ static struct aabb csg_bounds(const struct object *o)
 	}
 	}
 	return b;
+}
+
+static struct aabb csg_bounds(const struct object *o)
+{
+	const struct csg *c = (const struct csg *)o;
+	return c->boxed ? c->box : children_bounds(c);
+}
+
+/* Before the first transform the box comes from the children; from then on
+ * that box is moved with the object, as POV-Ray does (measured: six axis
+ * planes rotated 45 degrees about y give x, z in +-1.414214; rotated back,
+ * +-2; a union's box is its own box moved, not its moved children's). An
+ * infinite box stays infinite. */
+static void csg_transform_bounds(struct object *o, const struct xform *t)
+{
+	struct csg *c = (struct csg *)o;
+	if (!c->boxed) {
+		c->box = children_bounds(c);
+		c->boxed = true;
+	}
+	if (aabb_is_finite(c->box))
+		c->box = mat_bounds(&t->fwd, c->box);
 }
 
 static size_t csg_children(struct object *o, struct object ***kids)
@@ -336,10 +370,27 @@ static const struct object_ops csg_ops = {
 	.normal = csg_normal,
 	.bounds = csg_bounds,
 	.children = csg_children,
+	.transform_bounds = csg_transform_bounds,
 	.prepare = csg_prepare,
 	.copy = csg_copy,
 	.destroy = csg_destroy,
 };
+
+/* o lies under an inversion: every union in it, o included, keeps only
+ * its outer surface. */
+static void mark_inverted(struct object *o)
+{
+	if (o->ops != &csg_ops)
+		return;
+	struct csg *c = (struct csg *)o;
+	if (c->settled)
+		return; /* its subtree was marked before */
+	c->settled = true;
+	if (c->kind == CSG_UNION)
+		c->as_merge = true;
+	for (size_t i = 0; i < c->n; i++)
+		mark_inverted(c->kids[i]);
+}
 
 struct object *csg_new(enum csg_kind kind, struct srcpos pos)
 {
@@ -360,6 +411,9 @@ void csg_add(struct object *o, struct object *child)
 		if (!c->kids) abort();
 	}
 	c->kids[c->n++] = child;
+	c->boxed = false; /* a part after a transform (lucent only): from the parts */
+	if ((c->kind == CSG_DIFFERENCE && c->n > 1) || (child->flags & OBJ_INVERSE))
+		mark_inverted(child);
 	/* The hierarchy, if any, no longer covers every child. */
 	group_clear(&c->g);
 	set_group(c);
@@ -374,6 +428,20 @@ bool csg_kind_of(const struct object *o, enum csg_kind *kind)
 	return true;
 }
 
+void csg_settle(struct object *o)
+{
+	if (o->ops != &csg_ops)
+		return;
+	struct csg *c = (struct csg *)o;
+	if (o->flags & OBJ_INVERSE) {
+		mark_inverted(o);
+		return;
+	}
+	for (size_t i = 0; i < c->n; i++)
+		if ((c->kind == CSG_DIFFERENCE && i > 0) || (c->kids[i]->flags & OBJ_INVERSE))
+			mark_inverted(c->kids[i]);
+}
+
 void csg_set_split(struct object *o, bool split)
 {
 	((struct csg *)o)->split = split;
@@ -384,5 +452,5 @@ bool csg_splittable(const struct object *o)
 	if (o->ops != &csg_ops)
 		return false;
 	const struct csg *c = (const struct csg *)o;
-	return c->kind == CSG_UNION && c->split && !o->clip && !o->bound && !(o->flags & OBJ_INVERSE);
+	return c->kind == CSG_UNION && !c->as_merge && c->split && !o->clip && !o->bound && !(o->flags & OBJ_INVERSE);
 }

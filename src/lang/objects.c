@@ -552,17 +552,23 @@ static void parse_mesh2_list(struct parser *p, struct mesh_builder *mb, enum mes
 			continue;
 		}
 		struct value v = parse_expression(p);
-		if (which == M2_FACES && v.kind == VAL_FLOAT && st.face.set) {
+		/* After a face's vector a float is its texture index; after its
+		 * third one, a float is the next face (measured in POV-Ray). */
+		if (which == M2_FACES && v.kind == VAL_FLOAT && st.face.set && st.face.ntex < 3) {
 			size_t nt = mesh_texture_count(mb);
 			if (nt == 0)
 				parse_error_at(p, vat, "a face's texture index needs a texture_list before face_indices");
-			if (st.face.ntex == 3)
-				parse_error_at(p, vat, "a face has at most 3 texture indices");
 			st.face.tex[st.face.ntex++] = list_index(p, v.v[0], nt, "texture", vat);
 			continue;
 		}
-		if (v.kind != VAL_VECTOR)
+		/* A float stands for the vector of three copies of it, in every
+		 * list, as in POV-Ray (vertex_vectors { 3, 0, 1, <0,2,0> }). */
+		if (v.kind == VAL_FLOAT) {
+			v.v[1] = v.v[2] = v.v[0];
+			v.n = 3;
+		} else if (v.kind != VAL_VECTOR) {
 			parse_error_at(p, vat, "expected a vector in %s, found a %s", m2_names[which], val_kind_name(v.kind));
+		}
 		list_vector(p, mb, &st, v.v, v.n, vat);
 	}
 	flush_face(p, mb, &st.face);
@@ -1044,6 +1050,9 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		o->bound = o->clip;
 	if (s.flags)
 		object_set_flags(o, s.flags);
+	/* Unions under an inversion lose their inner surfaces (csg.h). */
+	if (csg_kind_of(o, NULL))
+		csg_settle(o);
 	/* A CSG's texture goes to the children that have none (also when it
 	 * is given to object { CsgIdentifier }). */
 	if (csg_kind_of(o, NULL) && o->tex)

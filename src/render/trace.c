@@ -148,6 +148,8 @@ struct surface {
 	bool leaving;                /* the ray leaves that interior here */
 	double dist;                 /* the length of the ray that reached pt */
 	int depth;
+	unsigned skip;               /* the objects that ray could not see, which the
+	                              * transmitted ray inherits */
 };
 
 /* The default interior of objects without one, when media are not tracked. */
@@ -528,6 +530,9 @@ static bool total_internal(const struct prepared *p, const struct surface *s, ve
 	return !shade_refract(s->dir, n, n1 / n2, &d);
 }
 
+static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, unsigned skip,
+                     double weight, const struct medium *med, bool *hit_anything);
+
 /* A ray of the transmitted light through s: refracted by the relative ior
  * (eta = n1 / n2), or split into the bands of the spectrum (disperses());
  * a band under total internal reflection is mirrored. (The caller handles
@@ -556,7 +561,7 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 			rgb c;
 			if (shade_refract(s->dir, n, eta, &d)) {
 				r = (struct ray){v3_madd(s->pt, n, -s->eps), d};
-				c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFRACTED, weight, &band, &any);
+				c = trace_see(tr, &r, s->depth + 1, RAY_REFRACTED, s->skip, weight, &band, &any);
 			} else {
 				r = (struct ray){v3_madd(s->pt, n, s->eps), v3_reflect(s->dir, n)};
 				c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight, &back, &any);
@@ -572,7 +577,7 @@ static rgb transmit(struct tracer *tr, const struct surface *s, vec3 n, double w
 	/* A ray that passes straight through (no change of ior) stays on its
 	 * trace level, as in POV-Ray 3.7 (measured: eight clear faces in a row
 	 * all show at max_trace_level 2; with ior 1.5 each face takes one). */
-	return trace_ray_in(tr, &r, n1 == n2 ? s->depth : s->depth + 1, RAY_REFRACTED, weight, after, &any);
+	return trace_see(tr, &r, n1 == n2 ? s->depth : s->depth + 1, RAY_REFRACTED, s->skip, weight, after, &any);
 }
 
 /* The diffuse light and highlights of layer y at s from a light lt
@@ -799,13 +804,18 @@ static rgb shade_texture(struct tracer *tr, const struct texture *t, const struc
 	return rgb_add(rgb_scale(a, 1 - w), rgb_scale(b, w));
 }
 
-rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, double weight,
-                 const struct medium *med, bool *hit_anything)
+/* trace_ray_in for a ray that cannot see the objects with a `skip` flag.
+ * Camera rays skip no_image objects and reflected rays no_reflection ones;
+ * a ray transmitted through a surface, refracted or not, skips what the ray
+ * that reached the surface skipped (measured in POV-Ray: a no_image object
+ * stays hidden behind a clear pane and behind glass of ior 1.5, and shows
+ * through them in a mirror, where a no_reflection object is hidden). */
+static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, unsigned skip,
+                     double weight, const struct medium *med, bool *hit_anything)
 {
 	const struct prepared *p = tr->p;
 	tr->stats.rays[kind]++;
 	struct hit h;
-	unsigned skip = kind == RAY_CAMERA ? OBJ_NO_IMAGE : kind == RAY_REFLECTED ? OBJ_NO_REFLECTION : 0;
 	if (!trace_closest(p, r, 0, INFINITY, skip, &h)) {
 		vec3 dir = v3_norm(r->dir);
 		struct rgbft bg = atmos_escape(p, dir);
@@ -820,7 +830,7 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		tr->transmit = 0;
 		return signature_color(h.obj->id);
 	}
-	struct surface s = {.obj = h.obj, .med = med, .depth = depth, .dist = h.t * v3_len(r->dir)};
+	struct surface s = {.obj = h.obj, .med = med, .depth = depth, .dist = h.t * v3_len(r->dir), .skip = skip};
 	s.dir = v3_norm(r->dir);
 	s.pt = v3_madd(r->org, r->dir, h.t);
 	s.n = object_normal(h.obj, s.pt, &h);
@@ -846,6 +856,13 @@ rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kin
 		tr->transmit = c.t;
 	}
 	return col;
+}
+
+rgb trace_ray_in(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, double weight,
+                 const struct medium *med, bool *hit_anything)
+{
+	unsigned skip = kind == RAY_CAMERA ? OBJ_NO_IMAGE : kind == RAY_REFLECTED ? OBJ_NO_REFLECTION : 0;
+	return trace_see(tr, r, depth, kind, skip, weight, med, hit_anything);
 }
 
 rgb trace_ray(struct tracer *tr, const struct ray *r, int depth, enum ray_kind kind, bool *hit_anything)

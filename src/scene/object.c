@@ -27,6 +27,8 @@ void object_init(struct object *o, const struct object_ops *ops, struct srcpos p
 void object_transform(struct object *o, const struct xform *t)
 {
 	struct object **kids;
+	if (o->ops->transform_bounds)
+		o->ops->transform_bounds(o, t);
 	if (o->ops->children) {
 		size_t n = o->ops->children(o, &kids);
 		for (size_t i = 0; i < n; i++)

@@ -66,6 +66,11 @@ struct object_ops {
 	/* CSG only (NULL elsewhere): the children, for operations that walk
 	 * the tree (transforms, textures, flags, prepare). */
 	size_t (*children)(struct object *o, struct object ***kids);
+	/* CSG only (may be NULL): object_transform calls it with t before the
+	 * children move. POV-Ray keeps a CSG's box from before its first
+	 * transform and moves that box (a rotated cube of planes stays
+	 * bounded). */
+	void (*transform_bounds)(struct object *o, const struct xform *t);
 	/* Build what the object needs before rendering (CSG: its own BVH),
 	 * after its children have been prepared; may be NULL. */
 	void (*prepare)(struct object *o);

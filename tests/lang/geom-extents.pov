@@ -74,3 +74,31 @@ P("I", intersection { sphere { 0, 1 } plane { x, 0.5 } })
 P("J", intersection { plane { x, 1 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } plane { z, 1 } plane { -z, 1 } scale 2 translate 1 })
 P("K", intersection { plane { x, 1 } plane { x, 0.5 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } plane { z, 1 } plane { -z, 1 }  })
 P("M", intersection { plane { 2*x, 1 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } plane { z, 1 } plane { -z, 1 } })
+// A CSG keeps the box it had before its first transform and moves that box with it (an
+// intersection of axis planes rotated as a whole stays bounded; rotated back it grows). POV-Ray
+// stores boxes as single-precision corner and lengths, so some moved boxes differ from lucent's
+// in the 7th digit (a 45-degree rotation of <0,-1,-1>..<1,1,1> gives 1.414213 there, 1.414214
+// here); the cases below avoid that.
+#declare Cube = intersection { plane { x, 1 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } plane { z, 1 } plane { -z, 1 } }
+P("cube-rot", object { Cube rotate 45*y })
+P("cube-rot-in", intersection { plane { x, 1 } plane { -x, 1 } plane { y, 1 } plane { -y, 1 } plane { z, 1 } plane { -z, 1 } rotate 45*y })
+P("cube-rot-back", object { Cube rotate 45*y rotate -45*y })
+P("cube-rot2", object { object { Cube rotate 45*y } rotate -45*y })
+P("cube-tr-rot", object { Cube translate x rotate 45*y })
+P("cube-sc-rot", object { Cube scale <2,1,1> rotate 45*z })
+P("cube-mat", object { Cube matrix <1,0.5,0, 0,1,0, 0,0,1, 0,0,0> })
+P("cube-rot90", object { Cube rotate 90*y translate 2*x })
+P("union-cube-rot", union { object { Cube } sphere { 2*x, 1 } rotate 90*y translate 0.5*x })
+P("union-sph-rot", union { sphere { 0, 1 } sphere { x, 1 } rotate 45*z })
+P("merge-sph-rot", merge { sphere { 0, 1 } sphere { x, 1 } rotate 45*z })
+P("union-rot30", union { sphere { 0, 1 } box { 0, <2,1,1> } rotate 30*y })
+P("union-sc", union { box { 0, 1 } sphere { 2, 1 } scale <1,2,3> })
+P("isect-sphplane-rot", intersection { sphere { 0, 1 } plane { y, 0.5 } rotate 45*z })
+P("diff-rot", difference { box { -1, 1 } plane { y, 0.5 } rotate 45*z })
+P("diff-planes-rot", difference { object { Cube } plane { y, 0.5 } rotate 45*z })
+P("nest-rot", intersection { object { Cube rotate 45*y } sphere { 0, 5 } })
+P("nest-rot2", intersection { object { Cube rotate 45*y } plane { y, 0.5 } })
+P("nest-rot3", intersection { object { Cube rotate 45*y } plane { x, 0.5 } })
+P("slab-rot", intersection { plane { y, 1 } plane { -y, 1 } rotate 45*z })
+P("union-of-rot-rot", union { object { Cube rotate 45*y } sphere { 0, 0.5 } rotate -45*y })
+P("cube-clipbox-rot", object { Cube clipped_by { box { -1.2, 1.2 } } rotate 45*y })

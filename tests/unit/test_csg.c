@@ -240,6 +240,27 @@ static void test_plane_extents(void **state)
 	assert_vec_near(b.hi, -0.5, 1, 1, 1e-15);
 	object_free(d);
 
+	/* Rotated as a whole, the cube keeps its box, rotated (POV-Ray:
+	 * x, z in +-1.414214); rotated back, the box of that box (+-2). */
+	cube = csg_new(CSG_INTERSECTION, nopos);
+	for (int a = 0; a < 3; a++)
+		for (int s = -1; s <= 1; s += 2)
+			csg_add(cube, plane_new(v3(a == 0 ? s : 0, a == 1 ? s : 0, a == 2 ? s : 0), 1, nopos));
+	struct xform ry = xform_rotate(v3(0, 45, 0)), ryb = xform_rotate(v3(0, -45, 0));
+	object_transform(cube, &ry);
+	b = object_world_bounds(cube);
+	assert_vec_near(b.lo, -sqrt(2), -1, -sqrt(2), 1e-12);
+	assert_vec_near(b.hi, sqrt(2), 1, sqrt(2), 1e-12);
+	struct object *cc = object_copy(cube);
+	object_transform(cube, &ryb);
+	b = object_world_bounds(cube);
+	assert_vec_near(b.lo, -2, -1, -2, 1e-12);
+	assert_vec_near(b.hi, 2, 1, 2, 1e-12);
+	b = object_world_bounds(cc); /* the copy keeps its own box */
+	assert_vec_near(b.hi, sqrt(2), 1, sqrt(2), 1e-12);
+	object_free(cc);
+	object_free(cube);
+
 	struct object *e = csg_new(CSG_INTERSECTION, nopos);
 	csg_add(e, sphere_new(v3(0, 0, 0), 1, nopos));
 	csg_add(e, plane_new(v3(0, 1, 0), -5, nopos));
@@ -283,6 +304,120 @@ static void test_prepared_matches_scan(void **state)
 	}
 }
 
+/* The union of two spheres radius 0.9 at x = -0.5 and 0.5. */
+static struct object *lens_union(void)
+{
+	struct object *u = csg_new(CSG_UNION, nopos);
+	csg_add(u, sphere_new(v3(-0.5, 0, 0), 0.9, nopos));
+	csg_add(u, sphere_new(v3(0.5, 0, 0), 0.9, nopos));
+	return u;
+}
+
+/* The closest hit's y along -y from (0.01, 5, 0.03), before and after
+ * object_prepare; NAN for a miss. */
+static double hit_y_down(struct object *o)
+{
+	struct ray r = {v3(0.01, 5, 0.03), v3(0, -1, 0)};
+	struct hit h, hp;
+	double y = NAN;
+	if (object_intersect(o, &r, 0, INFINITY, &h))
+		y = 5 - h.t;
+	struct object *c = object_copy(o);
+	object_prepare(c);
+	bool f = object_intersect(c, &r, 0, INFINITY, &hp);
+	assert_int_equal(f, !isnan(y));
+	if (f)
+		assert_near(5 - hp.t, y, 1e-12);
+	object_free(c);
+	return y;
+}
+
+/* difference { sphere { 0, 1.5 } union { sphere { <-0.5,0,0>, 0.9 }
+ * sphere { <0.5,0,0>, 0.9 } } plane { -y, 0 } }: the ray leaves the left
+ * sphere at y = -0.7409 still inside the right one; POV-Ray's trace()
+ * gives y = -0.754321 (the right sphere), as it inverts the subtracted
+ * union into an intersection of inverted spheres (no inner surfaces). The
+ * same with the union inside another union, and inverted by hand. */
+static void test_inverted_union(void **state)
+{
+	(void)state;
+	const double right = -0.754321, left = -0.740945; /* POV-Ray, 6 decimals */
+	struct object *d = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(d, sphere_new(v3(0, 0, 0), 1.5, nopos));
+	csg_add(d, lens_union());
+	csg_add(d, plane_new(v3(0, -1, 0), 0, nopos));
+	assert_near(hit_y_down(d), right, 1e-6);
+	object_free(d);
+
+	/* Nested: union { union { … } sphere { <0,0.5,0>, 0.9 } } subtracted. */
+	d = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(d, sphere_new(v3(0, 0, 0), 1.5, nopos));
+	struct object *outer = csg_new(CSG_UNION, nopos);
+	csg_add(outer, lens_union());
+	csg_add(outer, sphere_new(v3(0, 0.5, 0), 0.9, nopos));
+	csg_add(d, outer);
+	csg_add(d, plane_new(v3(0, -1, 0), 0, nopos));
+	assert_near(hit_y_down(d), right, 1e-6);
+	object_free(d);
+
+	/* intersection { sphere { 0, 1.5 } object { U inverse } plane { y, 0 } }:
+	 * the flag set after the union is built, then csg_settle. */
+	struct object *i = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(i, sphere_new(v3(0, 0, 0), 1.5, nopos));
+	struct object *u = lens_union();
+	csg_add(i, u);
+	csg_add(i, plane_new(v3(0, 1, 0), 0, nopos));
+	u->flags ^= OBJ_INVERSE;
+	csg_settle(i);
+	assert_near(hit_y_down(i), right, 1e-6);
+	object_free(i);
+
+	/* An inverted intersection keeps its crossings (it becomes a merge of
+	 * inverted children): the lens's boundary at the left sphere. */
+	d = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(d, sphere_new(v3(0, 0, 0), 1.5, nopos));
+	struct object *lens = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(lens, sphere_new(v3(-0.5, 0, 0), 0.9, nopos));
+	csg_add(lens, sphere_new(v3(0.5, 0, 0), 0.9, nopos));
+	csg_add(d, lens);
+	csg_add(d, plane_new(v3(0, -1, 0), 0, nopos));
+	assert_near(hit_y_down(d), left, 1e-6);
+	object_free(d);
+}
+
+/* From inside both spheres along +x: a union shows the left sphere's inner
+ * surface at x = 0.4; inverted (once or twice: a merge) it does not, and
+ * the hit is at x = 1.4 (POV-Ray: 0.399722 and 1.399722 from
+ * <0,0.01,0.02>). An inverted union must not be split into the scene. */
+static void test_inverted_union_alone(void **state)
+{
+	(void)state;
+	struct ray r = {v3(0, 0, 0), v3(1, 0, 0)};
+	struct hit h;
+	struct object *u = lens_union();
+	csg_settle(u);
+	assert_true(object_intersect(u, &r, 0, INFINITY, &h));
+	assert_near(h.t, 0.4, 1e-12);
+	assert_true(csg_splittable(u));
+	u->flags ^= OBJ_INVERSE;
+	csg_settle(u);
+	assert_true(object_intersect(u, &r, 0, INFINITY, &h));
+	assert_near(h.t, 1.4, 1e-12);
+	assert_true(h.inverted);
+	u->flags ^= OBJ_INVERSE;
+	csg_settle(u);
+	assert_true(object_intersect(u, &r, 0, INFINITY, &h));
+	assert_near(h.t, 1.4, 1e-12);
+	assert_false(h.inverted);
+	assert_false(csg_splittable(u));
+	/* A copy keeps it. */
+	struct object *c = object_copy(u);
+	assert_true(object_intersect(c, &r, 0, INFINITY, &h));
+	assert_near(h.t, 1.4, 1e-12);
+	object_free(c);
+	object_free(u);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -295,6 +430,8 @@ int main(void)
 		cmocka_unit_test(test_inverse),
 		cmocka_unit_test(test_plane_extents),
 		cmocka_unit_test(test_prepared_matches_scan),
+		cmocka_unit_test(test_inverted_union),
+		cmocka_unit_test(test_inverted_union_alone),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
