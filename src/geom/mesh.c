@@ -275,6 +275,7 @@ struct mesh_data {
 	struct idx3 *tri_n;     /* normal indices (MESH_NONE: flat face) or NULL */
 	struct idx3 *tri_uv;    /* uv indices (MESH_NONE: uv <0,0>) or NULL */
 	struct idx3 *tri_tex;   /* texture indices: 1 (rest MESH_NONE), 3, or none; or NULL */
+	uint32_t *decl;         /* [i]: the hierarchy index of kept face i in declaration order */
 	struct mesh_node *nodes;
 	struct aabb box;        /* object-space bounds of the kept triangles */
 	double extent;          /* largest coordinate magnitude, for the traversal's padding */
@@ -299,6 +300,7 @@ static void data_free(struct mesh_data *d)
 	free(d->tri_n);
 	free(d->tri_uv);
 	free(d->tri_tex);
+	free(d->decl);
 	free(d->nodes);
 	free(d);
 }
@@ -919,6 +921,12 @@ static void build_hierarchy(struct mesh_data *d)
 	uint32_t n = d->ntris;
 	int idbits;
 	uint64_t *code = curve_sort(d, &idbits);
+	/* The low bits of a sorted code are the face's index before the sort
+	 * (mesh_face reads faces in declaration order). */
+	d->decl = malloc((size_t)n * sizeof *d->decl);
+	if (!d->decl) abort();
+	for (uint32_t j = 0; j < n; j++)
+		d->decl[code[j] & (((uint64_t)1 << idbits) - 1)] = j;
 
 	uint32_t *cfirst = malloc(((size_t)n + 1) * sizeof *cfirst);
 	if (!cfirst) abort();
@@ -1409,3 +1417,24 @@ void mesh_triangle(const struct object *o, size_t i, vec3 corner[3])
 	for (int k = 0; k < 3; k++)
 		corner[k] = d->verts[d->tri[i].i[k]];
 }
+
+size_t mesh_face_total(const struct object *o) { return data_of(o)->ntris; }
+
+void mesh_face(const struct object *o, size_t i, struct mesh_face *f)
+{
+	const struct mesh_data *d = data_of(o);
+	uint32_t k = d->decl[i];
+	const struct idx3 *t = &d->tri[k];
+	for (int c = 0; c < 3; c++)
+		f->corner[c] = d->verts[t->i[c]];
+	f->has_normals = d->tri_n && d->tri_n[k].i[0] != MESH_NONE;
+	f->has_uv = d->tri_uv && d->tri_uv[k].i[0] != MESH_NONE;
+	for (int c = 0; c < 3; c++) {
+		f->normal[c] = f->has_normals ? d->normals[d->tri_n[k].i[c]] : v3(0, 0, 0);
+		vec3 uv = f->has_uv ? d->uvs[d->tri_uv[k].i[c]] : v3(0, 0, 0);
+		f->uv[c][0] = uv.x;
+		f->uv[c][1] = uv.y;
+	}
+}
+
+bool mesh_is(const struct object *o) { return o->ops == &mesh_ops; }

@@ -87,4 +87,18 @@ void mesh_get_stats(const struct object *o, struct mesh_stats *st);
 /* The corners of triangle i (in the mesh's order, as in h->part). */
 void mesh_triangle(const struct object *o, size_t i, vec3 corner[3]);
 
+/* A face as declared (object space): for the mesh camera. */
+struct mesh_face {
+	vec3 corner[3];
+	vec3 normal[3];       /* unit vertex normals when has_normals */
+	double uv[3][2];      /* when has_uv */
+	bool has_normals, has_uv;
+};
+/* Is o a mesh object (mesh or mesh2)? */
+bool mesh_is(const struct object *o);
+/* The number of faces kept (degenerate ones dropped, as POV-Ray does). */
+size_t mesh_face_total(const struct object *o);
+/* Face i (0 <= i < mesh_face_total) in declaration order. */
+void mesh_face(const struct object *o, size_t i, struct mesh_face *f);
+
 #endif

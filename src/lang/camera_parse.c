@@ -7,7 +7,10 @@
  * (transformations). */
 #include "lang/parser.h"
 
+#include "geom/mesh.h"
 #include "scene/camera.h"
+
+#include <stdlib.h>
 
 /* What a camera block said, beside the vectors stored at once. */
 struct cam_items {
@@ -20,8 +23,108 @@ struct cam_items {
 	struct xform xf;      /* the transformations, composed in order */
 };
 
+/* Append mesh o's faces, in world space, to m. */
+static void add_mesh_faces(struct mesh_cam *m, const struct object *o, size_t *cap)
+{
+	size_t n = mesh_face_total(o), have = m->first[m->nmesh];
+	if (have + n > *cap) {
+		*cap = (have + n) * 2;
+		m->face = realloc(m->face, *cap * sizeof *m->face);
+		if (!m->face)
+			abort();
+	}
+	for (size_t i = 0; i < n; i++) {
+		struct mesh_face mf;
+		mesh_face(o, i, &mf);
+		struct camera_face *f = &m->face[have + i];
+		for (int k = 0; k < 3; k++) {
+			f->p[k] = mat_point(&o->xf.fwd, mf.corner[k]);
+			f->vn[k] = mf.has_normals ? v3_norm(mat_normal(&o->xf.inv, mf.normal[k])) : v3(0, 0, 0);
+			f->uv[k][0] = mf.uv[k][0];
+			f->uv[k][1] = mf.uv[k][1];
+		}
+		f->has_normals = mf.has_normals;
+		f->has_uv = mf.has_uv;
+		f->centroid = v3_scale(v3_add(f->p[0], v3_add(f->p[1], f->p[2])), 1.0 / 3);
+		f->n = v3_norm(v3_cross(v3_sub(f->p[2], f->p[0]), v3_sub(f->p[1], f->p[0])));
+	}
+}
+
+/* mesh_camera := mesh_camera '{' RAYS DISTRIBUTION { mesh_item } [smooth] '}'
+ * mesh_item := mesh '{' IDENT { transformation } '}'
+ * (no commas between the numbers: POV-Ray refuses them.) */
+static void parse_mesh_camera(struct parser *p, struct camera *c)
+{
+	parse_advance(p);
+	parse_expect(p, TOK_LBRACE);
+	struct mesh_cam *m = calloc(1, sizeof *m);
+	if (!m)
+		abort();
+	m->refs = 1;
+	mesh_cam_unref(c->mesh);
+	c->mesh = m; /* owned by the camera from here, freed with it on an error */
+	c->kind = CAMERA_MESH;
+	struct srcpos rpos = parse_peek(p)->pos;
+	double rays = parse_float(p);
+	if (rays < 1)
+		parse_error_at(p, rpos, "a mesh camera needs at least 1 ray per pixel, not %g", rays);
+	m->rays = (int)rays;
+	struct srcpos dpos = parse_peek(p)->pos;
+	double dist = parse_float(p);
+	if (!(dist >= 0 && dist < 4))
+		parse_error_at(p, dpos, "a mesh camera's distribution type must be 0, 1, 2 or 3, not %g", dist);
+	m->dist = (int)dist;
+	size_t cap = 0;
+	m->first = malloc(sizeof *m->first);
+	if (!m->first)
+		abort();
+	m->first[0] = 0;
+	for (;;) {
+		const struct token *t = parse_peek(p);
+		if (t->kind != TOK_KEYWORD || t->kw != KW_MESH)
+			break;
+		parse_advance(p);
+		parse_expect(p, TOK_LBRACE);
+		const struct value *v = parse_ident_value(p);
+		if (!v)
+			parse_expected(p, "the identifier of a mesh");
+		if (v->kind != VAL_OBJECT || !mesh_is(v->obj))
+			parse_wrong_kind(p, v, "a mesh");
+		struct object *o = object_copy(v->obj);
+		parse_advance(p);
+		struct xform step;
+		while (parse_transform_item(p, &step))
+			object_transform(o, &step);
+		size_t *first = realloc(m->first, (size_t)(m->nmesh + 2) * sizeof *first);
+		if (!first)
+			abort();
+		m->first = first;
+		add_mesh_faces(m, o, &cap);
+		m->first[m->nmesh + 1] = m->first[m->nmesh] + mesh_face_total(o);
+		m->nmesh++;
+		object_free(o);
+		if (!parse_accept(p, TOK_RBRACE)) {
+			parse_expected(p, "a transformation or '}' in a mesh camera's mesh");
+		}
+	}
+	const struct token *t = parse_peek(p);
+	if (t->kind == TOK_KEYWORD && t->kw == KW_SMOOTH) {
+		parse_advance(p);
+		m->smooth = true;
+	}
+	struct srcpos end = parse_peek(p)->pos;
+	if (m->nmesh == 0)
+		parse_error_at(p, end, "a mesh camera needs at least one mesh");
+	if (m->dist == 0 && m->nmesh < m->rays)
+		parse_error_at(p, rpos, "distribution 0 needs a mesh per ray: %d rays per pixel but %d mesh%s", m->rays,
+		               m->nmesh, m->nmesh == 1 ? "" : "es");
+	if ((m->dist == 2 || m->dist == 3) && m->rays != 1)
+		parse_error_at(p, rpos, "distribution %d takes 1 ray per pixel, not %d", m->dist, m->rays);
+	parse_expect(p, TOK_RBRACE);
+}
+
 /* camera_type := perspective | orthographic | fisheye | ultra_wide_angle
- *              | omnimax | panoramic | spherical | cylinder FLOAT
+ *              | omnimax | panoramic | spherical | cylinder FLOAT | mesh_camera
  * Returns false if the current token is none. */
 static bool parse_camera_type(struct parser *p, struct camera *c)
 {
@@ -36,6 +139,9 @@ static bool parse_camera_type(struct parser *p, struct camera *c)
 	case KW_OMNIMAX: c->kind = CAMERA_OMNIMAX; break;
 	case KW_PANORAMIC: c->kind = CAMERA_PANORAMIC; break;
 	case KW_SPHERICAL: c->kind = CAMERA_SPHERICAL; break;
+	case KW_MESH_CAMERA:
+		parse_mesh_camera(p, c);
+		return true;
 	case KW_CYLINDER: {
 		parse_advance(p);
 		struct srcpos at = parse_peek(p)->pos;
@@ -64,6 +170,7 @@ static const char *kind_name(enum camera_kind k)
 	case CAMERA_PANORAMIC: return "panoramic";
 	case CAMERA_CYLINDER: return "cylinder";
 	case CAMERA_SPHERICAL: return "spherical";
+	case CAMERA_MESH: return "mesh_camera";
 	}
 	return "camera";
 }
@@ -76,7 +183,7 @@ static bool at_camera_type(struct parser *p)
 		return false;
 	switch (t->kw) {
 	case KW_PERSPECTIVE: case KW_ORTHOGRAPHIC: case KW_FISHEYE: case KW_ULTRA_WIDE_ANGLE:
-	case KW_OMNIMAX: case KW_PANORAMIC: case KW_SPHERICAL: case KW_CYLINDER:
+	case KW_OMNIMAX: case KW_PANORAMIC: case KW_SPHERICAL: case KW_CYLINDER: case KW_MESH_CAMERA:
 		return true;
 	default:
 		return false;

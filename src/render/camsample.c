@@ -295,6 +295,22 @@ rgb camera_sample(struct tracer *tr, double x, double y, int w, int h, int px, i
 {
 	const struct camera *cam = &tr->p->scene->camera;
 	*any = false;
+	if (cam->kind == CAMERA_MESH) {
+		/* The mean of the rays that have a face; none: black. */
+		rgb sum = rgb_make(0, 0, 0);
+		int n = 0;
+		for (int k = 0; k < cam->mesh->rays; k++) {
+			struct ray r;
+			if (!camera_mesh_ray(cam, x, y, w, h, k, &r))
+				continue;
+			bool hit = false;
+			rgb c = trace_ray(tr, &r, 1, RAY_CAMERA, &hit);
+			*any = *any || hit;
+			sum = rgb_make(sum.r + c.r, sum.g + c.g, sum.b + c.b);
+			n++;
+		}
+		return n > 0 ? rgb_make(sum.r / n, sum.g / n, sum.b / n) : sum;
+	}
 	if ((tr->p->features & FEAT_FOCAL_BLUR) && tr->p->lens)
 		return focal_blur(tr, tr->p->lens, x, y, w, h, px, py, sample, any);
 	struct ray r;

@@ -13,6 +13,9 @@
 
 #include "scene/texture.h"
 
+#include <math.h>
+#include <stdlib.h>
+
 /* POV-Ray's omnimax lens: the angle off the axis of a point at radius r of
  * the lens plane, in radians (an odd polynomial fitted to POV-Ray's
  * renders: residual under 2e-5 radians over the whole image circle). */
@@ -59,12 +62,25 @@ void camera_copy(struct camera *dst, const struct camera *src)
 	*dst = *src;
 	if (dst->bokeh)
 		pigment_ref(dst->bokeh);
+	if (dst->mesh)
+		dst->mesh->refs++;
+}
+
+void mesh_cam_unref(struct mesh_cam *m)
+{
+	if (!m || --m->refs > 0)
+		return;
+	free(m->first);
+	free(m->face);
+	free(m);
 }
 
 void camera_clear(struct camera *c)
 {
 	pigment_unref(c->bokeh);
 	c->bokeh = NULL;
+	mesh_cam_unref(c->mesh);
+	c->mesh = NULL;
 }
 
 void camera_update(struct camera *c)
@@ -164,6 +180,8 @@ static bool pinhole(const struct camera *c, double u, double v, struct ray *r)
 {
 	r->org = c->location;
 	switch (c->kind) {
+	case CAMERA_MESH:
+		return false; /* its rays come from camera_mesh_ray */
 	case CAMERA_PERSPECTIVE:
 		/* D + u R + v U */
 		r->dir = v3_add(c->direction, comb(u, c->right, v, c->up, 0, c->dn));
@@ -277,4 +295,101 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
 	r->org = v3_add(r->org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
 	r->dir = v3_norm(v3_sub(focus, r->org));
 	return true;
+}
+
+/* Mesh camera. Where POV-Ray puts a pixel, measured with -A renders of
+ * meshes whose faces are numbered by the colour they see: pixel (col, row)
+ * is face w * max(row - 1, 0) + col in distributions 0 to 2 (the first two
+ * rows share the first row of faces), and in distribution 3 the uv point
+ * (X / w, 1 - Y / h) with X = col except w - 1.5 in the last column and
+ * Y = row except 0.5 in the first row. */
+static bool mesh_face_ray(const struct camera *c, const struct camera_face *f, vec3 org, vec3 n, struct ray *r)
+{
+	if (c->direction.z < -1e-10)
+		n = v3_neg(n);
+	/* location's z moves the origin along the face's normal. */
+	r->org = v3_madd(org, n, c->location.z);
+	r->dir = n;
+	(void)f;
+	return true;
+}
+
+/* The barycentric weights (of corners 1 and 2) of uv point (u, v) in the
+ * face's uv triangle; false outside it or where the uv triangle turns
+ * clockwise (measured: POV-Ray finds no face there). */
+static bool uv_weights(const struct camera_face *f, double u, double v, double *b1, double *b2)
+{
+	double ax = f->uv[0][0], ay = f->uv[0][1];
+	double e1x = f->uv[1][0] - ax, e1y = f->uv[1][1] - ay;
+	double e2x = f->uv[2][0] - ax, e2y = f->uv[2][1] - ay;
+	double det = e1x * e2y - e1y * e2x;
+	if (!(det > 0))
+		return false;
+	double px = u - ax, py = v - ay;
+	*b1 = (px * e2y - py * e2x) / det;
+	*b2 = (e1x * py - e1y * px) / det;
+	return *b1 >= 0 && *b2 >= 0 && *b1 + *b2 <= 1;
+}
+
+bool camera_mesh_ray(const struct camera *c, double x, double y, int w, int h, int k, struct ray *r)
+{
+	const struct mesh_cam *m = c->mesh;
+	int col = (int)floor(x), row = (int)floor(y);
+	if (m->dist == 3) {
+		double X = col >= w - 1 ? w - 1.5 : x - 0.5, Y = row <= 0 ? 0.5 : y - 0.5;
+		double u = X / w, v = 1 - Y / h;
+		for (size_t i = 0; i < m->first[1]; i++) {
+			const struct camera_face *f = &m->face[i];
+			double b1, b2;
+			if (!f->has_uv || !uv_weights(f, u, v, &b1, &b2))
+				continue;
+			double b0 = 1 - b1 - b2;
+			vec3 org = v3_madd(v3_madd(v3_scale(f->p[0], b0), f->p[1], b1), f->p[2], b2);
+			vec3 n = f->n;
+			if (m->smooth && f->has_normals) {
+				vec3 s = v3_madd(v3_madd(v3_scale(f->vn[0], b0), f->vn[1], b1), f->vn[2], b2);
+				if (v3_dot(s, s) > 0)
+					n = v3_norm(s);
+			}
+			return mesh_face_ray(c, f, org, n, r);
+		}
+		return false;
+	}
+	if (row > 0)
+		row--;
+	size_t face, lo = 0, hi = m->first[m->nmesh];
+	switch (m->dist) {
+	case 0:
+		/* Ray k of a pixel: mesh k's face at the pixel number. */
+		lo = m->first[k];
+		hi = m->first[k + 1];
+		face = lo + (size_t)w * (size_t)row + (size_t)col;
+		break;
+	case 1:
+		/* The meshes' faces in one list. The manual puts ray k at w h k
+		 * faces further, but POV-Ray 3.7 shoots only the first (measured:
+		 * 2 rays over two meshes of 12 faces on a 4 x 3 image give the
+		 * colour of the first ray's face alone). */
+		if (k > 0)
+			return false;
+		face = (size_t)w * (size_t)row + (size_t)col;
+		break;
+	default: {
+		/* Side by side: mesh j sees the j-th of nmesh equal blocks of
+		 * width bw. Its face is bw * row + col with the image's column,
+		 * not the block's (measured: two meshes of 6 faces on a 4 x 3
+		 * image show faces 2, 3 of the second mesh at the top right). */
+		int bw = w / m->nmesh;
+		int j = bw > 0 ? col / bw : 0;
+		if (j >= m->nmesh)
+			return false;
+		lo = m->first[j];
+		hi = m->first[j + 1];
+		face = lo + (size_t)bw * (size_t)row + (size_t)col;
+		break;
+	}
+	}
+	if (face < lo || face >= hi)
+		return false;
+	return mesh_face_ray(c, &m->face[face], m->face[face].centroid, m->face[face].n, r);
 }

@@ -13,9 +13,32 @@
 
 struct pigment;
 
+/* One face of a mesh camera, in world space. */
+struct camera_face {
+	vec3 p[3];            /* corners */
+	vec3 centroid;
+	vec3 n;               /* unit flat normal (c - a) x (b - a): the ray's direction */
+	vec3 vn[3];           /* unit vertex normals (smooth), when has_normals */
+	double uv[3][2];      /* when has_uv */
+	bool has_normals, has_uv;
+};
+
+/* mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { ... } ... [smooth] }:
+ * shared by the camera's copies (reference-counted). */
+struct mesh_cam {
+	int refs;
+	int rays;             /* rays per pixel, >= 1 */
+	int dist;             /* distribution type 0 to 3 */
+	double max_dist;      /* ray length limit; 0: none */
+	bool smooth;          /* distribution 3: interpolate vertex normals */
+	int nmesh;
+	size_t *first;        /* [k]: first face of mesh k; [nmesh]: the total */
+	struct camera_face *face;
+};
+
 enum camera_kind {
 	CAMERA_PERSPECTIVE, CAMERA_ORTHOGRAPHIC, CAMERA_FISHEYE, CAMERA_ULTRA_WIDE_ANGLE,
-	CAMERA_OMNIMAX, CAMERA_PANORAMIC, CAMERA_CYLINDER, CAMERA_SPHERICAL
+	CAMERA_OMNIMAX, CAMERA_PANORAMIC, CAMERA_CYLINDER, CAMERA_SPHERICAL, CAMERA_MESH
 };
 
 struct camera {
@@ -31,6 +54,7 @@ struct camera {
 	int blur_samples_min, blur_samples_max;
 	double confidence, variance;
 	struct pigment *bokeh; /* focal blur's lens shape (a reference), or NULL: round */
+	struct mesh_cam *mesh; /* CAMERA_MESH: its faces (a reference) */
 	struct srcpos pos;
 
 	/* Derived by camera_update from the fields above; read by camera_ray. */
@@ -74,5 +98,12 @@ void camera_update(struct camera *c);
  * black, as in POV-Ray. */
 bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
                 struct ray *r);
+
+/* Mesh camera: the ray number `k` (0 <= k < rays) of the pixel at image
+ * position (x, y) (see camera_ray). Returns false when no face belongs to
+ * it: that ray is not shot and does not count in the pixel's average. */
+bool camera_mesh_ray(const struct camera *c, double x, double y, int w, int h, int k, struct ray *r);
+/* Drop a reference to m (NULL is fine). */
+void mesh_cam_unref(struct mesh_cam *m);
 
 #endif
