@@ -837,9 +837,11 @@ void parse_debug_write(struct parser *p, const char *text)
 		}
 		if (p->debug_len == WIDTH) {
 			/* Break before the last space if there is one (the space
-			 * starts the next line), else after 80 characters. */
+			 * starts the next line), else after 80 characters; a
+			 * space arriving now is the last (POV-Ray then keeps the
+			 * 80 characters whole). */
 			int cut = WIDTH;
-			for (int i = WIDTH - 1; i > 0; i--)
+			for (int i = WIDTH - 1; i > 0 && *c != ' '; i--)
 				if (p->debug_line[i] == ' ') {
 					cut = i;
 					break;

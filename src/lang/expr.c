@@ -485,14 +485,7 @@ static struct value parse_primary(struct parser *p)
 		struct value *v = parse_lookup(p, name);
 		if (!v)
 			parse_undefined(p, name);
-		if (v->deprecated) {
-			if (*v->deprecated)
-				parse_warning_at(p, at, "%s", v->deprecated);
-			else
-				parse_warning_at(p, at, "'%s' is deprecated", name);
-			if (v->deprecated_once)
-				v->deprecated = NULL;
-		}
+		parse_note_use(p, v, name, at);
 		/* Hold the binding while its suffix is read: a macro frame that
 		 * ends meanwhile must not take the value with it. */
 		struct value c = ident_value_copy(p, v, at);

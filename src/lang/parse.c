@@ -707,10 +707,31 @@ const struct value *parse_ident_value(struct parser *p)
 	const struct token *t = parse_peek(p);
 	if (t->kind != TOK_IDENT)
 		return NULL;
-	const struct value *v = parse_lookup(p, t->str);
+	struct value *v = parse_lookup(p, t->str);
 	if (!v)
 		parse_undefined(p, t->str);
+	parse_note_use(p, v, t->str, t->pos);
 	return v;
+}
+
+void parse_note_use(struct parser *p, struct value *v, const char *name, struct srcpos at)
+{
+	if (!v->deprecated)
+		return;
+	/* One token can be looked at twice: as an identifier of some kind,
+	 * then as the start of an expression. No directive runs in between,
+	 * so `events` tells that apart from a loop reading it again. */
+	const struct srcpos *w = &p->deprecated_at;
+	if (w->file == at.file && w->line == at.line && w->col == at.col && p->deprecated_ev == p->events)
+		return;
+	p->deprecated_at = at;
+	p->deprecated_ev = p->events;
+	if (*v->deprecated)
+		parse_warning_at(p, at, "%s", v->deprecated);
+	else
+		parse_warning_at(p, at, "'%s' is deprecated", name);
+	if (v->deprecated_once)
+		v->deprecated = NULL;
 }
 
 void parse_wrong_kind(struct parser *p, const struct value *v, const char *want)

@@ -75,6 +75,8 @@ struct parser {
 	                              * after a statement runs only once the
 	                              * statement is complete */
 	struct token prev;           /* the token consumed last, for positions */
+	struct srcpos deprecated_at; /* the use of a deprecated identifier warned */
+	unsigned long deprecated_ev; /* about last, and `events` then (one warning a use) */
 
 	struct symtab *globals;
 	double version;
@@ -166,6 +168,10 @@ _Noreturn void parse_undefined(struct parser *p, const char *name);
 /* If the current token is an identifier, its value (an undefined one is
  * an error); otherwise NULL. Does not consume it. */
 const struct value *parse_ident_value(struct parser *p);
+/* Gives the warning of a `#declare deprecated` identifier v, named name and
+ * used at at (once in all if it was declared `once`), and only once for one
+ * use however often the token is looked at; does nothing for others. */
+void parse_note_use(struct parser *p, struct value *v, const char *name, struct srcpos at);
 /* "'X' is a K, not WANT" about the identifier at the current token. */
 _Noreturn void parse_wrong_kind(struct parser *p, const struct value *v, const char *want);
 /* Symbols: the innermost binding of name (aliases followed), or NULL. */
