@@ -289,9 +289,14 @@ static void declare_float(struct parser *p, const char *name, double x)
 	parse_assign(p, name, true, v);
 }
 
+/* Does a #for loop run with its variable at i? POV-Ray allows 1e-10 past
+ * the end, whatever the step (measured: #for (Y, 0.78, 0.93, 0.01) runs
+ * 16 times though the summed Y ends 2e-16 past 0.93; with the end moved
+ * 0.9e-10 lower it still does, with 1.1e-10 it runs 15; the same for
+ * steps 1, 100, 0.0001 and downwards). */
 static bool for_continues(double i, double end, double step)
 {
-	return step > 0 ? i <= end : i >= end;
+	return step > 0 ? i <= end + 1e-10 : i >= end - 1e-10;
 }
 
 /* #for ( IDENT , START , END [, STEP] ) */
