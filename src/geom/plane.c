@@ -40,7 +40,9 @@ static int plane_all_hits(const struct object *o, const struct ray *r, double tm
 static bool plane_inside(const struct object *o, vec3 q)
 {
 	const struct plane *p = (const struct plane *)o;
-	return v3_dot(q, p->n) < p->d;
+	/* Points on the plane, and up to 1e-10 outside it, are inside, as in
+	 * POV-Ray (measured with inside(): 1e-11 above is inside, 1e-9 not). */
+	return v3_dot(q, p->n) - p->d < 1e-10;
 }
 
 static vec3 plane_normal(const struct object *o, vec3 q, const struct hit *h)
