@@ -75,6 +75,11 @@ struct parser {
 	                              * after a statement runs only once the
 	                              * statement is complete */
 	struct token prev;           /* the token consumed last, for positions */
+	const struct value *cur_elem; /* the array element the lookahead
+	                              * identifier stands for after A[i]... was
+	                              * read (parse_ident_value), valid while that
+	                              * token at cur_elem_at is the lookahead */
+	struct srcpos cur_elem_at;
 
 	struct symtab *globals;
 	double version;
