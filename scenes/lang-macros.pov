@@ -4,9 +4,10 @@
 // (a branching tree, 6 levels, 127 branches), #for and #while loops with
 // #local and #declare, #if/#else, #switch with #case and #range, arrays
 // (a one-dimensional array filled in a loop, a two-dimensional one given
-// whole, an element of a texture array as texture { Leaf[i] }), a spline evaluated along a path of spheres, string functions
-// (concat, str, strlen) used in a condition, and vector functions
-// (vnormalize, vcross, vrotate, vlength).
+// whole, an element of a texture array as texture { Leaf[i] }), a
+// spline evaluated along a path of spheres, string functions (concat,
+// str, strlen) used in a condition, and vector functions (vnormalize,
+// vcross, vrotate, vlength).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 #include "lang-macros.inc"
