@@ -1,5 +1,5 @@
 #!/bin/sh
-# tests/stability/run.sh: hard geometric cases, each checked by a property
+# tests/stability/run.sh: hard cases, each checked by a property
 # of the image rather than against a stored render. The scenes are
 # tests/stability/*.pov; each one's header says what it checks, the
 # tolerance, and how lucent and POV-Ray 3.7 fare (summed up in README.md):
