@@ -5,6 +5,7 @@
 #   ./build.sh                 everything
 #   CONFIGURE_FLAGS=... ./build.sh   extra ./configure flags (CI: --enable-werror;
 #                                    fuzzing: "--enable-fuzz CC=clang CXX=clang++")
+#   EXTRA_PACKAGES="clang valgrind" ./build.sh   also install these (CI)
 set -e
 cd "$(dirname "$0")"
 
@@ -20,6 +21,9 @@ fonts-liberation fonts-dejavu-core"
 case " $CONFIGURE_FLAGS " in
 *" --enable-fuzz "*) PACKAGES="$PACKAGES clang" ;;
 esac
+# EXTRA_PACKAGES: more to install, for the targets that need them: CI's
+# make check-fuzz (clang) and make check-valgrind (valgrind).
+PACKAGES="$PACKAGES $EXTRA_PACKAGES"
 
 missing=""
 for p in $PACKAGES; do

@@ -161,15 +161,20 @@ static double f_seed(struct parser *p, double s)
 		p->rng = realloc(p->rng, (size_t)p->caprng * sizeof *p->rng);
 		if (!p->rng) abort();
 	}
-	p->rng[p->nrng] = (uint32_t)(int64_t)s;
+	/* POV-Ray takes the seed as a 32-bit int; outside that range (and for
+	 * NaN) it gets INT_MIN, as x86's conversion gives (measured:
+	 * seed(3e9), seed(1e30) and seed(-1e30) draw what seed(-2^31) does). */
+	p->rng[p->nrng] = s >= -2147483648.0 && s < 2147483648.0 ? (uint32_t)(int32_t)s : 0x80000000u;
 	return p->nrng++;
 }
 
 static double f_rand(struct parser *p, double stream, struct srcpos at)
 {
-	long i = (long)stream;
-	if (i < 0 || i >= p->nrng)
+	/* Checked as a float first (a huge value does not fit a long); the
+	 * index is the value truncated toward zero. */
+	if (!(stream > -1 && stream < p->nrng))
 		parse_error_at(p, at, "rand() needs a stream made by seed(), not %g", stream);
+	long i = (long)stream;
 	p->rng[i] = p->rng[i] * 1812433253u + 12345u;
 	return p->rng[i] / 4294967295.0;
 }

@@ -466,11 +466,22 @@ size_t parse_array_index(struct parser *p, const struct array *a, const char *na
 	return idx;
 }
 
+/* Drop a reference to a macro taken by parse_call_macro (for parse_own). */
+static void macro_unref(void *m)
+{
+	struct value v = {.kind = VAL_MACRO, .mac = m};
+	val_clear(&v);
+}
+
 void parse_call_macro(struct parser *p, const struct token *name, struct macro *m)
 {
 	struct token lp = parse_raw(p);
 	if (lp.kind != TOK_LPAREN)
 		raw_expected(p, &lp, "'(' after the macro name");
+	/* The arguments may run directives, and a #macro among them may
+	 * replace this very macro: hold it until its frame is set up. */
+	m->refs++;
+	int mslot = parse_own(p, m, macro_unref);
 	struct symtab *locals = p->spare_locals ? p->spare_locals : sym_new();
 	p->spare_locals = NULL;
 	sym_track(locals, &p->bindgen, &p->lookgen);
@@ -546,6 +557,10 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 			parse_expected(p, "',' or ')' after a macro argument");
 		}
 	}
+	const struct value *now = parse_lookup(p, m->name);
+	if (!now || now->kind != VAL_MACRO || now->mac != m)
+		parse_error_at(p, name->pos, "macro %s was redefined or undefined while the arguments of its call "
+		               "were read", m->name);
 	if (n != m->nparams)
 		parse_error_at(p, name->pos, "macro %s takes %d argument%s, but %d %s given", m->name, m->nparams,
 		               m->nparams == 1 ? "" : "s", n, n == 1 ? "was" : "were");
@@ -580,6 +595,8 @@ void parse_call_macro(struct parser *p, const struct token *name, struct macro *
 	mf->nconds = p->nconds;
 	/* The parameters now hide any other bindings of their names. */
 	sym_touch(locals);
+	parse_release(p, mslot);
+	macro_unref(m); /* its binding still holds it */
 }
 
 /* ---- #declare, #local, #undef ---- */

@@ -702,15 +702,75 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	return rc;
 }
 
+static void free_array_hold(void *a)
+{
+	struct value v = {.kind = VAL_ARRAY, .arr = a};
+	val_clear(&v);
+}
+
+/* The next token of the current frame is '[' (looked at in place, so
+ * that nothing is fetched: the lookahead stays free). */
+static bool frame_next_is_lbracket(const struct parser *p)
+{
+	const struct frame *f = &p->frames[p->nframes - 1];
+	return f->pos < f->end && f->toks[f->pos].kind == TOK_LBRACKET;
+}
+
+/* A[i]... where an item identifier is expected (object { A[i] },
+ * texture { T[i] }, ...): reads the subscripts and returns the element,
+ * leaving the identifier's token as the lookahead, so that the caller's
+ * parse_advance passes over the whole reference. The array is held while
+ * the indices are read; an index that redefines the array is an error. */
+static const struct value *ident_element(struct parser *p, const struct value *v)
+{
+	struct token id = p->cur;
+	parse_advance(p);
+	struct array *held = v->arr;
+	held->refs++;
+	int slot = parse_own(p, held, free_array_hold);
+	while (v->kind == VAL_ARRAY && frame_next_is_lbracket(p)) {
+		size_t idx = parse_array_index(p, v->arr, id.str, id.pos);
+		v = &v->arr->elems[idx];
+		if (v->kind == VAL_NONE)
+			parse_error_at(p, id.pos, "element of array '%s' used before it was given a value", id.str);
+	}
+	const struct value *now = parse_lookup(p, id.str);
+	if (!now || now->kind != VAL_ARRAY || now->arr != held)
+		parse_error_at(p, id.pos, "array '%s' was changed while its index was read", id.str);
+	parse_release(p, slot);
+	free_array_hold(held); /* the binding still holds it */
+	p->cur = id;
+	p->have_cur = true;
+	p->cur_elem = v;
+	p->cur_elem_at = id.pos;
+	return v;
+}
+
+/* The lookahead is the identifier of an A[i]... already read: asked again
+ * before it is consumed (texture { T[i] } looks for a texture, then for a
+ * pigment), it stands for the same element. The identifier's own token,
+ * read afresh (in a loop), is still followed by its '['. */
+static bool at_read_element(const struct parser *p)
+{
+	return p->cur_elem && p->have_cur && p->cur.pos.file == p->cur_elem_at.file &&
+	       p->cur.pos.line == p->cur_elem_at.line && p->cur.pos.col == p->cur_elem_at.col &&
+	       !frame_next_is_lbracket(p);
+}
+
 const struct value *parse_ident_value(struct parser *p)
 {
 	const struct token *t = parse_peek(p);
 	if (t->kind != TOK_IDENT)
 		return NULL;
-	struct value *v = parse_lookup(p, t->str);
-	if (!v)
+	if (at_read_element(p))
+		return p->cur_elem;
+	struct value *found = parse_lookup(p, t->str);
+	if (!found)
 		parse_undefined(p, t->str);
-	parse_note_use(p, v, t->str, t->pos);
+	parse_note_use(p, found, t->str, t->pos);
+	const struct value *v = found;
+	if (v->kind == VAL_ARRAY && frame_next_is_lbracket(p))
+		v = ident_element(p, v);
 	return v;
 }
 

@@ -77,6 +77,11 @@ struct parser {
 	struct token prev;           /* the token consumed last, for positions */
 	struct srcpos deprecated_at; /* the use of a deprecated identifier warned */
 	unsigned long deprecated_ev; /* about last, and `events` then (one warning a use) */
+	const struct value *cur_elem; /* the array element the lookahead
+	                              * identifier stands for after A[i]... was
+	                              * read (parse_ident_value), valid while that
+	                              * token at cur_elem_at is the lookahead */
+	struct srcpos cur_elem_at;
 
 	struct symtab *globals;
 	double version;

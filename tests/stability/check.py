@@ -11,6 +11,14 @@ that idiff cannot do, one subcommand each:
       differs by more than T from all eight of its neighbours.
   dark IMAGE REF [--thr T]
       no pixel darker than in REF by more than T (mean of the channels).
+  flat IMAGE --bg C [--black] [--below [--max-loss M]] [--tol T]
+      every pixel is the colour C (within T, default 2e-3); with --black,
+      or black (every channel within T of 0); with --below, any pixel
+      with no channel above C's by more than T, and a mean loss
+      (1 - pixel/C, over the channels and pixels) of at most M.
+  subset IMAGE REF [--tol T]
+      every pixel that is black in REF is black in IMAGE (REF rendered
+      with a higher max_trace_level than IMAGE).
   grazing IMAGE --bg C --floor C --kmin K --kmax K [--horizon ROW]
       every pixel is the background colour or the floor colour times a
       factor in [kmin, kmax]; down each column, background then floor,
@@ -160,6 +168,43 @@ def cmd_dark(a):
     return n == 0
 
 
+def black(img, tol):
+    return np.abs(img).max(axis=-1) <= tol
+
+
+def cmd_flat(a):
+    img = load(a.image)
+    t = a.tol
+    nblack = black(img, t)
+    if a.below:
+        ratio = img / a.bg
+        bad = (img > a.bg + t).any(axis=-1)
+        loss = float((1 - ratio).mean())
+        print('%d pixel%s brighter than the colour, mean loss %.5f (at most %g), '
+              'darkest pixel %.4f of the colour%s'
+              % (int(bad.sum()), '' if bad.sum() == 1 else 's', loss, a.max_loss,
+                 float(ratio.min()), ': ' + positions(bad) if bad.any() else ''))
+        return not bad.any() and loss <= a.max_loss
+    bad = differ(img, a.bg, t)
+    if a.black:
+        bad &= ~nblack
+    print('%d pixels the colour, %d black%s, %d other%s'
+          % (int((~differ(img, a.bg, t)).sum()), int(nblack.sum()),
+             '' if a.black else ' (not allowed)', int(bad.sum()),
+             ': ' + positions(bad) if bad.any() else ''))
+    return not bad.any()
+
+
+def cmd_subset(a):
+    img, ref = load(a.image), load(a.ref)
+    bi, br = black(img, a.tol), black(ref, a.tol)
+    bad = br & ~bi
+    print('%d black pixels, %d in the reference, %d black there and not here%s'
+          % (int(bi.sum()), int(br.sum()), int(bad.sum()),
+             ': ' + positions(bad) if bad.any() else ''))
+    return not bad.any()
+
+
 def cmd_grazing(a):
     img = load(a.image)
     tol = a.tol
@@ -300,6 +345,21 @@ def main():
     p.add_argument('ref')
     p.add_argument('--thr', type=number, default=0.1)
     p.set_defaults(run=cmd_dark)
+
+    p = sub.add_parser('flat')
+    p.add_argument('image')
+    p.add_argument('--bg', type=vector, required=True)
+    p.add_argument('--black', action='store_true')
+    p.add_argument('--below', action='store_true')
+    p.add_argument('--max-loss', type=number, default=0)
+    p.add_argument('--tol', type=number, default=2e-3)
+    p.set_defaults(run=cmd_flat)
+
+    p = sub.add_parser('subset')
+    p.add_argument('image')
+    p.add_argument('ref')
+    p.add_argument('--tol', type=number, default=2e-3)
+    p.set_defaults(run=cmd_subset)
 
     p = sub.add_parser('grazing')
     p.add_argument('image')
