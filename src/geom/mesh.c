@@ -986,8 +986,29 @@ static struct idx3 *copy_idx(const struct idx3 *a, uint32_t n)
 	return c;
 }
 
-/* Take the builder's arrays, apply mesh2's default indices, drop degenerate
- * faces, and build the hierarchy. */
+/* Whether a face's three (unit) normals are one: POV-Ray then shades the
+ * face flat, with its own normal, whatever direction the three give
+ * (measured with trace(): a face whose normals are all <0, 0.6, -0.8>, or
+ * <0, 0.6, -0.8> and <0, 1.2, -1.6>, reports the face normal <0, 0, -1>).
+ * The second and third normals are compared with the first: within a
+ * distance of 1e-5 they count as equal (measured: 1.00e-5 is flat, 1.02e-5
+ * smooth, the same along an axis or a diagonal; <0,0,-1> with two normals
+ * 0.9e-5 away on opposite sides, 1.8e-5 apart, is flat). */
+static bool normals_equal(const vec3 *nrm, const struct idx3 *f)
+{
+	const double eps2 = 1e-10 * (1 + 1e-9); /* 1e-5 squared, and a last bit */
+	vec3 a = nrm[f->i[0]];
+	for (int k = 1; k < 3; k++) {
+		vec3 e = v3_sub(nrm[f->i[k]], a);
+		if (v3_dot(e, e) > eps2)
+			return false;
+	}
+	return true;
+}
+
+/* Take the builder's arrays, apply mesh2's default indices, flatten the
+ * faces whose normals are equal, drop degenerate faces, and build the
+ * hierarchy. */
 static struct mesh_data *data_new(struct mesh_builder *b)
 {
 	struct mesh_data *d = calloc(1, sizeof *d);
@@ -1018,6 +1039,11 @@ static struct mesh_data *data_new(struct mesh_builder *b)
 		if (!d->tri_uv && d->nuvs > 0 && d->nuvs == d->nverts)
 			d->tri_uv = copy_idx(d->tri, n);
 	}
+
+	if (d->tri_n)
+		for (uint32_t i = 0; i < n; i++)
+			if (d->tri_n[i].i[0] != MESH_NONE && normals_equal(d->normals, &d->tri_n[i]))
+				d->tri_n[i] = no_idx;
 
 	/* POV-Ray's mesh2 extents include the corners of the degenerate faces
 	 * it drops (measured with max_extent: a face <3,4,4> reaches vertex

@@ -382,7 +382,7 @@ static bool is_fractal(enum pattern_kind k)
 /* pattern_modifier := turbulence (V|F) | octaves N | omega F | lambda F
  *   | frequency F | phase F | ramp_wave | triangle_wave | sine_wave
  *   | scallop_wave | cubic_wave | poly_wave [F] | noise_generator N
- *   | warp | uv_mapping
+ *   | warp
  *   | the kinds' own: agate_turb F | brick_size V | mortar F | metric F
  *   | offset F | solid | form (V|N) | control0 F | control1 F | exponent N
  *   | interior N [',' F] | exterior N [',' F] | number_of_sides N
@@ -419,7 +419,6 @@ bool parse_pattern_modifier(struct parser *p, struct pattern *pt)
 		pt->noise_generator = parse_int_in(p, "noise_generator", 1, 3);
 		return true;
 	case KW_WARP: parse_warp(p, pt); return true;
-	case KW_UV_MAPPING: parse_advance(p); pt->uv_mapping = true; return true;
 	case KW_AGATE_TURB:
 		if (pk != PAT_AGATE) not_for_kind(p, at, k, "agate");
 		parse_advance(p);

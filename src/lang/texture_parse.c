@@ -243,7 +243,28 @@ static struct blend_map *block_map(struct parser *p, enum map_kind kind, const s
 	return parse_map(p, kind, pt->kind);
 }
 
-/* pigment_body := [IDENT] [pigment_type] { pigment_modifier }
+/* uv_prefix := { uv_mapping }
+ * POV-Ray takes uv_mapping only first in a pigment, normal or texture
+ * block, before or just after its identifier; the flag is applied when
+ * the block ends, so the block's own transformations move the uv-mapped
+ * pattern and later ones do not (see pattern_transform). Returns whether
+ * one was read. */
+static bool read_uv_prefix(struct parser *p)
+{
+	bool uv = false;
+	while (parse_accept_kw(p, KW_UV_MAPPING))
+		uv = true;
+	return uv;
+}
+
+/* A uv_mapping after the block's first items: POV-Ray's error. */
+static void late_uv_mapping(struct parser *p, const char *block)
+{
+	if (parse_is_kw(p, KW_UV_MAPPING))
+		parse_error(p, "uv_mapping must come first in a %s, before everything but an identifier", block);
+}
+
+/* pigment_body := uv_prefix [IDENT] uv_prefix [pigment_type] { pigment_modifier }
  * pigment_type := COLOR | pattern_type | image_map '{' IMAGE '}'
  * pigment_modifier := pattern_modifier | transformation | COLOR (a block
  *   pattern's list) | pigment '{' '}' (the same) | color_map | colour_map
@@ -251,12 +272,14 @@ static struct blend_map *block_map(struct parser *p, enum map_kind kind, const s
  * Reads up to and including `end` into *pig (replaced or made private). */
 static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind end)
 {
+	bool uv = read_uv_prefix(p);
 	const struct value *v = parse_ident_value(p);
 	if (v && v->kind == VAL_PIGMENT) {
 		pigment_unref(*pig);
 		*pig = pigment_ref(v->pig);
 		parse_advance(p);
 	}
+	uv |= read_uv_prefix(p);
 	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
 	for (;;) {
 		if (in_object && parse_accept(p, TOK_RBRACE)) {
@@ -370,6 +393,7 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 		default:
 			break;
 		}
+		late_uv_mapping(p, "pigment");
 		if (parse_pattern_modifier(p, &own_pigment(pig)->pat))
 			continue;
 		parse_expected(p, "a color, a pattern, a pigment modifier or '}'");
@@ -377,6 +401,8 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 	struct pigment *pg = *pig;
 	if (pg->map && pattern_is_block(pg->pat.kind) && pg->map->n < pattern_block_entries(pg->pat.kind))
 		finish_list(p, own_pigment(pig)->map, &pg->pat);
+	if (uv && (*pig)->kind != PIGMENT_SOLID)
+		own_pigment(pig)->pat.uv_mapping = true;
 }
 
 /* pigment := pigment '{' pigment_body '}'
@@ -393,12 +419,13 @@ void parse_pigment(struct parser *p, struct pigment **pig)
 
 /* ---- normal ---- */
 
-/* normal_body := [IDENT] [pattern_type [[','] AMOUNT]] { normal_modifier }
+/* normal_body := uv_prefix [IDENT] uv_prefix [pattern_type [[','] AMOUNT]] { normal_modifier }
  * normal_modifier := pattern_modifier | transformation | bump_size F
  *   | accuracy F | normal_map | slope_map | MAP_IDENT | normal '{' '}' (a
  *   block pattern's list) | bump_map '{' IMAGE { bump_size F } '}' */
 static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end)
 {
+	bool uv = read_uv_prefix(p);
 	const struct value *v = parse_ident_value(p);
 	if (v) {
 		if (v->kind != VAL_NORMAL)
@@ -407,6 +434,7 @@ static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end
 		*nrm = normal_ref(v->nrm);
 		parse_advance(p);
 	}
+	uv |= read_uv_prefix(p);
 	own_normal(nrm);
 	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
 	for (;;) {
@@ -491,6 +519,7 @@ static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end
 		default:
 			break;
 		}
+		late_uv_mapping(p, "normal");
 		if (parse_pattern_modifier(p, &own_normal(nrm)->pat))
 			continue;
 		parse_expected(p, "a pattern, a normal modifier or '}'");
@@ -498,6 +527,8 @@ static void normal_body(struct parser *p, struct normal **nrm, enum tok_kind end
 	struct normal *n = *nrm;
 	if (n->map && pattern_is_block(n->pat.kind) && n->map->n < pattern_block_entries(n->pat.kind))
 		finish_list(p, n->map, &n->pat);
+	if (uv)
+		own_normal(nrm)->pat.uv_mapping = true;
 }
 
 /* normal := normal '{' normal_body '}' : replaces or modifies *nrm (NULL:
@@ -691,8 +722,8 @@ static void texture_uv_mapping(struct texture **tex)
 		own_normal(&t->normal)->pat.uv_mapping = true;
 }
 
-/* texture_body := [IDENT] { PNF_IDENT } { texture_item }
- * texture_item := pigment | normal | finish | transformation | uv_mapping
+/* texture_body := uv_prefix [IDENT] uv_prefix { PNF_IDENT } { texture_item }
+ * texture_item := pigment | normal | finish | transformation
  *   | pattern_type { pattern_modifier | texture_map | MAP_IDENT
  *                    | texture '{' '}' (a block pattern's list) }
  *   | material_map '{' IMAGE { texture } '}'
@@ -702,6 +733,7 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 {
 	texture_unref(*tex);
 	*tex = NULL;
+	bool uv = read_uv_prefix(p);
 	const struct value *v = parse_ident_value(p);
 	if (v && v->kind == VAL_TEXTURE) {
 		*tex = texture_ref(v->tex);
@@ -711,7 +743,7 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 		 * the object had. */
 		*tex = default_texture(p);
 	}
-	bool uv = false;
+	uv |= read_uv_prefix(p);
 	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
 	for (;;) {
 		if (in_object && parse_accept(p, TOK_RBRACE)) {
@@ -853,13 +885,10 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 				parse_error(p, "a material_map needs at least one texture");
 			continue;
 		}
-		case KW_UV_MAPPING:
-			parse_advance(p);
-			uv = true;
-			continue;
 		default:
 			break;
 		}
+		late_uv_mapping(p, "texture");
 		if ((*tex)->kind != TEX_PLAIN && parse_pattern_modifier(p, &own_texture(tex)->pat))
 			continue;
 		parse_expected(p, "pigment, normal, finish, a pattern, a transformation or '}'");

@@ -174,6 +174,8 @@ void pattern_add_op(struct pattern *pt, const struct pattern_op *op)
 
 void pattern_transform(struct pattern *pt, const struct xform *t)
 {
+	if (pt->uv_mapping)
+		return;
 	if (pt->nops && pt->ops[pt->nops - 1].kind == POP_TRANSFORM) {
 		struct pattern_op *last = &pt->ops[pt->nops - 1];
 		last->xf = xform_compose(t, &last->xf);

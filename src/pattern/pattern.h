@@ -155,7 +155,9 @@ struct pattern pattern_copy(const struct pattern *src);
 /* Release what the pattern refers to; it becomes PAT_NONE. */
 void pattern_clear(struct pattern *pt);
 /* Append a transformation (composed into the last op when that is also a
- * transformation). */
+ * transformation). A pattern already under uv_mapping is left as it is:
+ * its point is fixed to the surface, and POV-Ray ignores transformations
+ * applied after the uv_mapping block (an object's, a later texture's). */
 void pattern_transform(struct pattern *pt, const struct xform *t);
 /* Append a warp. */
 void pattern_add_op(struct pattern *pt, const struct pattern_op *op);

@@ -850,12 +850,14 @@ static void test_mesh2_default_indices(void **state)
 {
 	(void)state;
 	/* mesh2 with as many normals and uv vectors as vertices and no index
-	 * lists: the face indices serve for both. No merging in mesh2. */
+	 * lists: the face indices serve for both. No merging in mesh2. (The
+	 * last normal differs, so that the face is not flattened as one with
+	 * three equal normals.) */
 	struct mesh_builder *b = mesh_builder_new(MESH_KIND_MESH2);
 	vec3 p[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}};
 	for (int i = 0; i < 4; i++) {
 		assert_int_equal(mesh_add_vertex(b, p[i]), i);
-		assert_int_equal(mesh_add_normal(b, v3(0, 0, 1)), i);
+		assert_int_equal(mesh_add_normal(b, v3(0, i == 3 ? 0.001 : 0, 1)), i);
 		assert_int_equal(mesh_add_uv(b, i, 10 * i), i);
 	}
 	struct texture *t = texture_new();
@@ -869,7 +871,7 @@ static void test_mesh2_default_indices(void **state)
 	assert_true(m->ops->uv(m, v3(0.25, 0.5, 0), &h, uv));
 	assert_near(uv[0], 0.25 * 1 + 0.5 * 3, 1e-15);
 	assert_near(uv[1], 0.25 * 10 + 0.5 * 30, 1e-15);
-	assert_vec_near(object_normal(m, v3(0.25, 0.5, 0), &h), 0, 0, 1, 0);
+	assert_vec_near(object_normal(m, v3(0.25, 0.5, 0), &h), 0, 0.0005, 1, 1e-6);
 	assert_null(m->ops->texture_at(m, &h));
 	object_free(m);
 
@@ -878,13 +880,15 @@ static void test_mesh2_default_indices(void **state)
 	for (int i = 0; i < 4; i++)
 		mesh_add_vertex(b, v3(i & 1, i >> 1, 0));
 	mesh_add_normal(b, v3(0, 1, -1));
+	mesh_add_normal(b, v3(0, -1, -1));
 	assert_true(mesh_add_face(b, (uint32_t[]){0, 1, 2}, 0, NULL));
 	assert_true(mesh_add_face(b, (uint32_t[]){1, 3, 2}, 0, NULL));
-	assert_true(mesh_set_face_normals(b, 0, (uint32_t[]){0, 0, 0}));
-	assert_false(mesh_set_face_normals(b, 1, (uint32_t[]){0, 1, 0}));
+	assert_true(mesh_set_face_normals(b, 0, (uint32_t[]){0, 1, 0}));
+	assert_false(mesh_set_face_normals(b, 1, (uint32_t[]){0, 2, 0}));
 	m = mesh_new(b, nopos);
 	h = must_hit(m, v3(0.25, 0.25, -1), v3(0, 0, 1), 0);
-	assert_vec_near(object_normal(m, v3(0.25, 0.25, 0), &h), 0, M_SQRT1_2, -M_SQRT1_2, 1e-15);
+	/* 3/4 of the first normal and 1/4 of the second: (0, 1, -2) / sqrt 5 */
+	assert_vec_near(v3_norm(object_normal(m, v3(0.25, 0.25, 0), &h)), 0, 1 / sqrt(5), -2 / sqrt(5), 1e-15);
 	h = must_hit(m, v3(0.75, 0.75, -1), v3(0, 0, 1), 0);
 	assert_near(fabs(v3_norm(object_normal(m, v3(0.75, 0.75, 0), &h)).z), 1, 0);
 	object_free(m);

@@ -57,6 +57,50 @@ static void test_transform_order(void **state)
 	parsed_free(&r);
 }
 
+/* uv_mapping in a pigment, normal or texture block, with POV-Ray's rules
+ * (measured by rendering a uv-checkered sphere at 160x120, each variant
+ * compared with `texture { uv_mapping pigment { ... } }`): the flag is set
+ * before or after the block's identifier and survives the pattern type
+ * read after it; a pattern type after a uv-mapped identifier starts a new,
+ * world-mapped pattern; transformations in the block before its end move
+ * the pattern (`uv_mapping P scale 2` renders 2x squares) and later ones
+ * do not (`pigment { Q scale 2 }`, `texture { T scale 2 }` and the
+ * object's `rotate` render as Q alone). */
+static void test_uv_mapping(void **state)
+{
+	(void)state;
+	struct parsed r;
+	parse_text(&r, "#version 3.7;\n"
+	               "#declare P = pigment { checker scale 0.5 }\n"
+	               "#declare Q = pigment { uv_mapping checker scale 0.5 }\n"
+	               "sphere { 0, 1 pigment { uv_mapping checker scale 0.5 } }\n"
+	               "sphere { 0, 1 pigment { uv_mapping P scale 2 } }\n"
+	               "sphere { 0, 1 pigment { Q scale 2 } rotate y*30 }\n"
+	               "sphere { 0, 1 pigment { Q bozo } }\n"
+	               "sphere { 0, 1 normal { uv_mapping bumps 0.5 } }\n"
+	               "sphere { 0, 1 texture { uv_mapping pigment { P } } scale 3 }\n");
+	assert_int_equal(r.s->nobjects, 6);
+	const struct pattern *p0 = &r.s->objects[0]->tex->pigment->pat;
+	assert_int_equal(p0->kind, PAT_CHECKER);
+	assert_true(p0->uv_mapping);
+	assert_near(op_scale_x(p0), 0.5, 1e-12);
+	const struct pattern *p1 = &r.s->objects[1]->tex->pigment->pat;
+	assert_true(p1->uv_mapping);
+	assert_near(op_scale_x(p1), 1, 1e-12);
+	const struct pattern *p2 = &r.s->objects[2]->tex->pigment->pat;
+	assert_true(p2->uv_mapping);
+	assert_int_equal(p2->nops, 1);
+	assert_near(op_scale_x(p2), 0.5, 1e-12);
+	const struct pattern *p3 = &r.s->objects[3]->tex->pigment->pat;
+	assert_int_equal(p3->kind, PAT_BOZO);
+	assert_false(p3->uv_mapping);
+	assert_true(r.s->objects[4]->tex->normal->pat.uv_mapping);
+	const struct pattern *p5 = &r.s->objects[5]->tex->pigment->pat;
+	assert_true(p5->uv_mapping);
+	assert_near(op_scale_x(p5), 0.5, 1e-12);
+	parsed_free(&r);
+}
+
 static void test_layers_and_lists(void **state)
 {
 	(void)state;
@@ -154,6 +198,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_transform_order),
+		cmocka_unit_test(test_uv_mapping),
 		cmocka_unit_test(test_layers_and_lists),
 		cmocka_unit_test(test_csg_fill_and_params),
 	};
