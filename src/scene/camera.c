@@ -75,6 +75,13 @@ void mesh_cam_unref(struct mesh_cam *m)
 	free(m);
 }
 
+double camera_ray_limit(const struct camera *c)
+{
+	if (c->kind == CAMERA_MESH && c->mesh && c->mesh->max_dist > 0)
+		return c->mesh->max_dist;
+	return INFINITY;
+}
+
 void camera_clear(struct camera *c)
 {
 	pigment_unref(c->bokeh);
@@ -315,15 +322,16 @@ static bool mesh_face_ray(const struct camera *c, const struct camera_face *f, v
 }
 
 /* The barycentric weights (of corners 1 and 2) of uv point (u, v) in the
- * face's uv triangle; false outside it or where the uv triangle turns
- * clockwise (measured: POV-Ray finds no face there). */
+ * face's uv triangle, which may turn either way (measured: a face whose uv
+ * triangle turns clockwise shoots its ray as one turning anticlockwise
+ * does); false outside it or where the triangle is flat. */
 static bool uv_weights(const struct camera_face *f, double u, double v, double *b1, double *b2)
 {
 	double ax = f->uv[0][0], ay = f->uv[0][1];
 	double e1x = f->uv[1][0] - ax, e1y = f->uv[1][1] - ay;
 	double e2x = f->uv[2][0] - ax, e2y = f->uv[2][1] - ay;
 	double det = e1x * e2y - e1y * e2x;
-	if (!(det > 0))
+	if (det == 0 || !isfinite(det))
 		return false;
 	double px = u - ax, py = v - ay;
 	*b1 = (px * e2y - py * e2x) / det;

@@ -31,7 +31,8 @@
 
 #include "testutil.h"
 
-/* Parse `camera { items }` and return the scene's camera. */
+/* Parse `camera { items }` and return the scene's camera (camera_clear
+ * it if it may hold references: a mesh camera). */
 static struct camera parse_cam(const char *items)
 {
 	char path[64];
@@ -48,7 +49,8 @@ static struct camera parse_cam(const char *items)
 	int rc = parse_scene(sm, &d, &o, s);
 	if (rc != 0)
 		fail_msg("camera { %s } did not parse", items);
-	struct camera c = s->camera;
+	struct camera c;
+	camera_copy(&c, &s->camera); /* a mesh camera's faces outlive the scene */
 	scene_free(s);
 	src_free(sm);
 	remove(path);
@@ -385,6 +387,61 @@ static void test_lens(void **state)
 	assert_near(r.org.x + t * r.dir.x, 0, 1e-9);
 }
 
+/* The quad of the mesh-camera tests: 4 x 2 in the plane z = 0, uv the
+ * unit square, faces turning clockwise in uv (their rays go along +z),
+ * vertex normals leaning out by 0.3 in x. "} ... camera {" puts the
+ * declaration before the camera block. */
+#define MESH_QUAD                                                                                            \
+	"} #declare M = mesh2 { vertex_vectors { 4, <-2,-1,0>, <2,-1,0>, <2,1,0>, <-2,1,0> } "                \
+	"normal_vectors { 4, <-0.3,0,1>, <0.3,0,1>, <0.3,0,1>, <-0.3,0,1> } "                                 \
+	"uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> } face_indices { 2, <0,2,1>, <0,3,2> } } camera { "
+
+/* Where the ray of pixel (px, py) of a w x h image meets the plane z = 5. */
+static double mesh_hit_x(const struct camera *c, int px, int py, int w, int h)
+{
+	struct ray r;
+	assert_true(camera_mesh_ray(c, px + 0.5, py + 0.5, w, h, 0, &r));
+	return r.org.x + (5 - r.org.z) / r.dir.z * r.dir.x;
+}
+
+/* Mesh camera, distribution 3: the ray of each pixel, smooth or not, and
+ * max_distance. Measured in POV-Ray (6 x 3 and 4 x 4, no antialiasing,
+ * File_Gamma 1, 16-bit PPM) looking at the plane z = 5 with pigment
+ * gradient x scaled 8 and moved -4 (value (x + 4) / 8), middle row. */
+static void test_mesh_camera(void **state)
+{
+	(void)state;
+	struct camera c = parse_cam(MESH_QUAD "mesh_camera { 1 3 mesh { M } } location <0,0,1>");
+	assert_int_equal(c.kind, CAMERA_MESH);
+	assert_true(isinf(camera_ray_limit(&c)));
+	/* Flat: POV-Ray's row 0.25 0.375 0.5 0.5625 at 4 x 4 (8-bit sRGB
+	 * 137 165 188 198); location's z moves the origin 1 along the ray. */
+	static const double flat[4] = {0.25, 0.375, 0.5, 0.5625};
+	for (int i = 0; i < 4; i++)
+		assert_near((mesh_hit_x(&c, i, 1, 4, 4) + 4) / 8, flat[i], 1e-4);
+	struct ray r;
+	assert_true(camera_mesh_ray(&c, 0.5, 1.5, 4, 4, 0, &r));
+	assert_vec_near(r.org, -2, 0.5, 1, 1e-12);
+	assert_vec_near(r.dir, 0, 0, 1, 1e-12);
+	camera_clear(&c);
+	/* Smooth: the normals interpolated. */
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 mesh { M } smooth }");
+	static const double smooth[6] = {0.06250, 0.20833, 0.35416, 0.50001, 0.64584, 0.71875};
+	for (int i = 0; i < 6; i++)
+		assert_near((mesh_hit_x(&c, i, 1, 6, 3) + 4) / 8, smooth[i], 1e-4);
+	camera_clear(&c);
+	/* max_distance: 3.9 sees the background and 4.1 the plane from the
+	 * origin moved 1 along the ray; 0 and below set no limit. */
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 4.1 mesh { M } } location <0,0,1>");
+	assert_near(camera_ray_limit(&c), 4.1, 0);
+	camera_clear(&c);
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 -1 mesh { M } }");
+	assert_true(isinf(camera_ray_limit(&c)));
+	camera_clear(&c);
+	c = parse_cam("location 0");
+	assert_true(isinf(camera_ray_limit(&c)));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -392,6 +449,7 @@ int main(void)
 		cmocka_unit_test(test_origins),
 		cmocka_unit_test(test_parse_items),
 		cmocka_unit_test(test_lens),
+		cmocka_unit_test(test_mesh_camera),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
