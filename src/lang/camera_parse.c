@@ -113,9 +113,8 @@ static void parse_mesh_camera(struct parser *p, struct camera *c)
 		parse_advance(p);
 		m->smooth = true;
 	}
-	struct srcpos end = parse_peek(p)->pos;
 	if (m->nmesh == 0)
-		parse_error_at(p, end, "a mesh camera needs at least one mesh");
+		parse_expected(p, "a mesh or mesh2 object (a mesh camera needs at least one)");
 	if (m->dist == 0 && m->nmesh < m->rays)
 		parse_error_at(p, rpos, "distribution 0 needs a mesh per ray: %d rays per pixel but %d mesh%s", m->rays,
 		               m->nmesh, m->nmesh == 1 ? "" : "es");

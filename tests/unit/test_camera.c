@@ -442,6 +442,64 @@ static void test_mesh_camera(void **state)
 	assert_true(isinf(camera_ray_limit(&c)));
 }
 
+/* Distributions 0 to 2: which faces a pixel's rays leave from. Face i of
+ * mesh A lies at x = i, of mesh B at x = 16 + i, all facing +z; POV-Ray
+ * (4 x 3, no antialiasing, 16-bit linear PPM) looked at the plane z = 5
+ * with pigment gradient x scaled 32, so each pixel holds the mean x of
+ * its rays' faces over 32. The tables give that mean x, row by row. */
+struct dist_case {
+	const char *cam;
+	double x[12];
+};
+
+/* Declares mesh A of NA faces at x = 0.. and B of NB at x = 16.. */
+#define MESH_FACES(NA, NB)                                                                                   \
+	"} #macro Faces(N, X0) mesh { #for (I, 0, N - 1) triangle { <X0 + I - 0.2, -0.2, 0>, "                  \
+	"<X0 + I, 0.2, 0>, <X0 + I + 0.2, -0.2, 0> } #end } #end "                                             \
+	"#declare A = Faces(" #NA ", 0) #declare B = Faces(" #NB ", 16) camera { "
+
+static const struct dist_case dist_cases[] = {
+	/* The first two rows share the first row of faces. */
+	{MESH_FACES(12, 12) "mesh_camera { 1 0 mesh { A } }", {0, 1, 2, 3, 0, 1, 2, 3, 4, 5, 6, 7}},
+	/* Ray k from mesh k, averaged. */
+	{MESH_FACES(12, 9) "mesh_camera { 2 0 mesh { A } mesh { B } }",
+	 {8, 9, 10, 11, 8, 9, 10, 11, 12, 13, 14, 15}},
+	/* One list of faces; the second ray is never shot. */
+	{MESH_FACES(6, 6) "mesh_camera { 2 1 mesh { A } mesh { B } }",
+	 {0, 1, 2, 3, 0, 1, 2, 3, 4, 5, 16, 17}},
+	{MESH_FACES(5, 6) "mesh_camera { 1 1 mesh { A } mesh { B } }",
+	 {0, 1, 2, 3, 0, 1, 2, 3, 4, 16, 17, 18}},
+	/* Side by side, the face index counting the image's column. */
+	{MESH_FACES(6, 6) "mesh_camera { 1 2 mesh { A } mesh { B } }",
+	 {0, 1, 18, 19, 0, 1, 18, 19, 2, 3, 20, 21}},
+};
+
+static void test_mesh_distributions(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < sizeof dist_cases / sizeof dist_cases[0]; i++) {
+		const struct dist_case *k = &dist_cases[i];
+		struct camera c = parse_cam(k->cam);
+		for (int py = 0; py < 3; py++)
+			for (int px = 0; px < 4; px++) {
+				double sum = 0;
+				int n = 0;
+				for (int ray = 0; ray < c.mesh->rays; ray++) {
+					struct ray r;
+					if (!camera_mesh_ray(&c, px + 0.5, py + 0.5, 4, 3, ray, &r))
+						continue;
+					assert_vec_near(r.dir, 0, 0, 1, 1e-12);
+					sum += r.org.x;
+					n++;
+				}
+				assert_true(n > 0);
+				if (fabs(sum / n - k->x[py * 4 + px]) > 1e-9)
+					fail_msg("%s: pixel (%d, %d) x %g, POV-Ray %g", k->cam, px, py, sum / n, k->x[py * 4 + px]);
+			}
+		camera_clear(&c);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -450,6 +508,7 @@ int main(void)
 		cmocka_unit_test(test_parse_items),
 		cmocka_unit_test(test_lens),
 		cmocka_unit_test(test_mesh_camera),
+		cmocka_unit_test(test_mesh_distributions),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
