@@ -1,7 +1,7 @@
 // cam-mesh1.pov: mesh_camera distribution 1 with max_distance: the faces
 // of two meshes (the image's upper and lower halves, one face per pixel,
 // each turned towards a common eye point) summed into one list. Rays
-// that meet nothing within 7 units of their face see the background, so
+// that meet nothing within 6 units of their face see the background, so
 // the far part of the floor is cut off.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -21,7 +21,7 @@ mesh {
 #end
 #declare Top = Rows(0, H / 2 - 1)
 #declare Bottom = Rows(H / 2, H - 1)
-camera { mesh_camera { 1 1 7 mesh { Top } mesh { Bottom } } }
+camera { mesh_camera { 1 1 6 mesh { Top } mesh { Bottom } } }
 sphere { <0, 1, 2>, 1 pigment { checker color rgb <1, 0.3, 0.1> color rgb <1, 0.9, 0.4> scale 0.25 } }
 plane { y, 0 pigment { checker color rgb 0.6 color rgb 0.2 } }
 light_source { <-10, 20, -10> color rgb 1 }
