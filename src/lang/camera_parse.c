@@ -306,7 +306,7 @@ static void finish_camera(struct parser *p, struct camera *c, struct cam_items *
  * camera_item := location V | look_at V | right V | up V | direction V
  *              | sky V | angle_item | aperture F | focal_point V
  *              | blur_samples | confidence F | variance F | bokeh
- *              | transformation
+ *              | normal | transformation
  * c holds the camera to start from (camera_default()). */
 void parse_camera(struct parser *p, struct camera *c)
 {
@@ -379,6 +379,7 @@ void parse_camera(struct parser *p, struct camera *c)
 		}
 		case KW_VARIANCE: parse_advance(p); c->variance = parse_float(p); break;
 		case KW_BOKEH: parse_bokeh(p, c); break;
+		case KW_NORMAL: parse_normal(p, &c->normal); break;
 		default:
 			parse_expected(p, "a camera item or '}'");
 		}

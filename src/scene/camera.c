@@ -64,6 +64,8 @@ void camera_copy(struct camera *dst, const struct camera *src)
 		pigment_ref(dst->bokeh);
 	if (dst->mesh)
 		dst->mesh->refs++;
+	if (dst->normal)
+		normal_ref(dst->normal);
 }
 
 void mesh_cam_unref(struct mesh_cam *m)
@@ -88,6 +90,8 @@ void camera_clear(struct camera *c)
 	c->bokeh = NULL;
 	mesh_cam_unref(c->mesh);
 	c->mesh = NULL;
+	normal_unref(c->normal);
+	c->normal = NULL;
 }
 
 void camera_update(struct camera *c)

@@ -12,6 +12,7 @@
 #include <stdbool.h>
 
 struct pigment;
+struct normal;
 
 /* One face of a mesh camera, in world space. */
 struct camera_face {
@@ -55,6 +56,7 @@ struct camera {
 	double confidence, variance;
 	struct pigment *bokeh; /* focal blur's lens shape (a reference), or NULL: round */
 	struct mesh_cam *mesh; /* CAMERA_MESH: its faces (a reference) */
+	struct normal *normal; /* camera ray perturbation (a reference), or NULL */
 	struct srcpos pos;
 
 	/* Derived by camera_update from the fields above; read by camera_ray. */
