@@ -134,7 +134,10 @@ bool camera_look_at(struct camera *c, vec3 at, bool *along_sky)
 {
 	double dl = v3_len(c->direction), rl = v3_len(c->right), ul = v3_len(c->up);
 	/* A left-handed frame has right = up x direction pointing along right;
-	 * a scene that flips right (right -x*4/3) keeps the flip. */
+	 * a scene that flips right (right -x*4/3) keeps the flip. So does a
+	 * frame whose handedness is 0 (up along direction, or right across
+	 * both): measured, `right x up z` (direction z) looking straight down
+	 * or at any other point sees the world mirrored, as with right -x. */
 	double hand = v3_dot(v3_cross(c->up, c->direction), c->right);
 	*along_sky = false;
 	vec3 d = v3_sub(at, c->location);
@@ -151,7 +154,7 @@ bool camera_look_at(struct camera *c, vec3 at, bool *along_sky)
 	}
 	r = v3_norm(r);
 	vec3 u = v3_norm(v3_cross(d, r));
-	if (hand < 0)
+	if (!(hand > 0))
 		r = v3_neg(r);
 	c->direction = v3_scale(d, dl);
 	c->right = v3_scale(r, rl);

@@ -500,6 +500,51 @@ static void test_mesh_distributions(void **state)
 	}
 }
 
+/* look_at and the frame's handedness: right is flipped unless
+ * (up x direction) . right > 0, so a handedness of 0 mirrors the image as
+ * a left-handed one does. Measured in POV-Ray (3 x 3, plane y = 0 with
+ * gradient x and z pigments repeating every 40 units, 16-bit linear):
+ * where the top-left and top-right pixels' rays meet the plane, modulo 40. */
+struct hand_case {
+	const char *cam;
+	double left[2], right[2]; /* (x, z) */
+};
+
+static const struct hand_case hand_cases[] = {
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5", {2.17, 2.17}, {-1.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up y*5", {-1.17, 2.17}, {2.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5 direction y", {2.17, 2.17},
+	 {-1.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5 direction -y", {-1.17, 2.17},
+	 {2.17, 2.17}},
+	{"location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5", {17.17, 17.17}, {-16.17, 17.17}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up z*5", {-6.64, 11.05}, {-6.64, -10.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up y*5", {-6.64, -10.05}, {-6.64, 11.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right z*5 up y*5", {-6.64, 11.05}, {-6.64, -10.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up y*5 direction x", {-6.64, 11.05}, {-6.64, -10.05}},
+};
+
+static void test_look_at_handedness(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < sizeof hand_cases / sizeof hand_cases[0]; i++) {
+		const struct hand_case *k = &hand_cases[i];
+		struct camera c = parse_cam(k->cam);
+		for (int side = 0; side < 2; side++) {
+			struct ray r;
+			assert_true(camera_ray(&c, side ? 2.5 : 0.5, 0.5, 3, 3, 0, 0, &r));
+			double t = -r.org.y / r.dir.y;
+			double x = r.org.x + t * r.dir.x, z = r.org.z + t * r.dir.z;
+			const double *want = side ? k->right : k->left;
+			/* The pigments repeat every 40 units. */
+			double dx = remainder(x - want[0], 40), dz = remainder(z - want[1], 40);
+			if (fabs(dx) > 0.01 || fabs(dz) > 0.01)
+				fail_msg("camera { %s } %s pixel: (%.2f, %.2f), POV-Ray (%.2f, %.2f)", k->cam,
+				         side ? "top-right" : "top-left", x, z, want[0], want[1]);
+		}
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -509,6 +554,7 @@ int main(void)
 		cmocka_unit_test(test_lens),
 		cmocka_unit_test(test_mesh_camera),
 		cmocka_unit_test(test_mesh_distributions),
+		cmocka_unit_test(test_look_at_handedness),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
