@@ -50,8 +50,9 @@ static void add_mesh_faces(struct mesh_cam *m, const struct object *o, size_t *c
 	}
 }
 
-/* mesh_camera := mesh_camera '{' RAYS DISTRIBUTION { mesh_item } [smooth] '}'
- * mesh_item := mesh '{' IDENT { transformation } '}'
+/* mesh_camera := mesh_camera '{' RAYS DISTRIBUTION [MAX_DISTANCE] { mesh_item } [smooth] '}'
+ * mesh_item := a mesh or mesh2 object statement (mesh { IDENT ... } too:
+ *              POV-Ray takes them whole, modifiers included)
  * (no commas between the numbers: POV-Ray refuses them.) */
 static void parse_mesh_camera(struct parser *p, struct camera *c)
 {
@@ -74,6 +75,12 @@ static void parse_mesh_camera(struct parser *p, struct camera *c)
 	if (!(dist >= 0 && dist < 4))
 		parse_error_at(p, dpos, "a mesh camera's distribution type must be 0, 1, 2 or 3, not %g", dist);
 	m->dist = (int)dist;
+	/* A max_distance of 0 or below sets no limit (measured: -1 and 0
+	 * see as far as no number). */
+	if (parse_starts_expression(p)) {
+		double md = parse_float(p);
+		m->max_dist = md > 0 ? md : 0;
+	}
 	size_t cap = 0;
 	m->first = malloc(sizeof *m->first);
 	if (!m->first)
@@ -81,20 +88,14 @@ static void parse_mesh_camera(struct parser *p, struct camera *c)
 	m->first[0] = 0;
 	for (;;) {
 		const struct token *t = parse_peek(p);
-		if (t->kind != TOK_KEYWORD || t->kw != KW_MESH)
+		if (t->kind != TOK_KEYWORD || (t->kw != KW_MESH && t->kw != KW_MESH2))
 			break;
-		parse_advance(p);
-		parse_expect(p, TOK_LBRACE);
-		const struct value *v = parse_ident_value(p);
-		if (!v)
-			parse_expected(p, "the identifier of a mesh");
-		if (v->kind != VAL_OBJECT || !mesh_is(v->obj))
-			parse_wrong_kind(p, v, "a mesh");
-		struct object *o = object_copy(v->obj);
-		parse_advance(p);
-		struct xform step;
-		while (parse_transform_item(p, &step))
-			object_transform(o, &step);
+		struct srcpos mpos = t->pos;
+		struct object *o = parse_object(p, false);
+		if (!mesh_is(o)) {
+			object_free(o);
+			parse_error_at(p, mpos, "a mesh camera's mesh must be a mesh or mesh2 object");
+		}
 		size_t *first = realloc(m->first, (size_t)(m->nmesh + 2) * sizeof *first);
 		if (!first)
 			abort();
@@ -103,18 +104,17 @@ static void parse_mesh_camera(struct parser *p, struct camera *c)
 		m->first[m->nmesh + 1] = m->first[m->nmesh] + mesh_face_total(o);
 		m->nmesh++;
 		object_free(o);
-		if (!parse_accept(p, TOK_RBRACE)) {
-			parse_expected(p, "a transformation or '}' in a mesh camera's mesh");
-		}
 	}
 	const struct token *t = parse_peek(p);
 	if (t->kind == TOK_KEYWORD && t->kw == KW_SMOOTH) {
+		/* POV-Ray refuses it with the other distributions too. */
+		if (m->dist != 3)
+			parse_error(p, "smooth applies to a mesh camera of distribution 3 only, not %d", m->dist);
 		parse_advance(p);
 		m->smooth = true;
 	}
-	struct srcpos end = parse_peek(p)->pos;
 	if (m->nmesh == 0)
-		parse_error_at(p, end, "a mesh camera needs at least one mesh");
+		parse_expected(p, "a mesh or mesh2 object (a mesh camera needs at least one)");
 	if (m->dist == 0 && m->nmesh < m->rays)
 		parse_error_at(p, rpos, "distribution 0 needs a mesh per ray: %d rays per pixel but %d mesh%s", m->rays,
 		               m->nmesh, m->nmesh == 1 ? "" : "es");
@@ -306,7 +306,7 @@ static void finish_camera(struct parser *p, struct camera *c, struct cam_items *
  * camera_item := location V | look_at V | right V | up V | direction V
  *              | sky V | angle_item | aperture F | focal_point V
  *              | blur_samples | confidence F | variance F | bokeh
- *              | transformation
+ *              | normal | transformation
  * c holds the camera to start from (camera_default()). */
 void parse_camera(struct parser *p, struct camera *c)
 {
@@ -379,6 +379,7 @@ void parse_camera(struct parser *p, struct camera *c)
 		}
 		case KW_VARIANCE: parse_advance(p); c->variance = parse_float(p); break;
 		case KW_BOKEH: parse_bokeh(p, c); break;
+		case KW_NORMAL: parse_normal(p, &c->normal); break;
 		default:
 			parse_expected(p, "a camera item or '}'");
 		}

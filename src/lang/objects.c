@@ -924,8 +924,8 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 
 /* object := primitive '{' args { object_modifier } '}'
  *         | csg '{' { object | object_modifier } '}'
- *         | mesh '{' { mesh_item | object_modifier } '}'
- *         | mesh2 '{' { mesh2_item | object_modifier } '}'
+ *         | mesh '{' (IDENT | { mesh_item }) { object_modifier } '}'
+ *         | mesh2 '{' (IDENT | { mesh2_item }) { object_modifier } '}'
  *         | object '{' (IDENT | object) { object_modifier } '}'
  * `child`: inside a CSG or a clip, where the default texture is not
  * applied (the parent's texture comes first). The caller owns the result. */
@@ -981,10 +981,24 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		break;
 	case KW_TEXT: s.o = parse_text(p, at); break;
 	case KW_MESH:
-	case KW_MESH2:
+	case KW_MESH2: {
+		/* mesh { IDENT ... }: POV-Ray takes a copy of any declared object
+		 * there (measured: mesh { M2 } and mesh { Sphere } render as
+		 * object { ... }). */
+		const struct value *v = parse_ident_value(p);
+		if (v) {
+			if (v->kind != VAL_OBJECT)
+				parse_wrong_kind(p, v, "an object");
+			s.o = object_copy(v->obj);
+			s.o->pos = at;
+			parse_advance(p);
+			parse_place_light_groups(p, s.o);
+			break;
+		}
 		s.mb = mesh_builder_new(k == KW_MESH ? MESH_KIND_MESH : MESH_KIND_MESH2);
 		mslot = parse_own(p, s.mb, free_mesh_builder_cb);
 		break;
+	}
 	default:
 		memset(&args, 0, sizeof args);
 		args.kw = k;

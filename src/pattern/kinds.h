@@ -34,7 +34,7 @@ PATTERN_FN(tiling); PATTERN_FN(pavement);
 
 /* The normal patterns that POV-Ray perturbs with a formula of their own
  * rather than the slope of their value (bumps, dents, ripples, waves,
- * wrinkles, facets): the perturbed unit normal from the unit normal n at
+ * wrinkles, quilted, facets): the perturbed unit normal from the unit normal n at
  * world point p (noisy.c). Returns false for every other kind.
  * n must already face the ray: POV-Ray adds the push to the normal that
  * faces the viewer, along-normal part included, and normalizes. Measured

@@ -371,6 +371,17 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 	case PAT_RIPPLES: case PAT_WAVES:
 		d = v3_scale(ripple_push(q, pt, ctx, pt->kind == PAT_WAVES), amount);
 		break;
+	case PAT_QUILTED: {
+		/* The offset o from the unit cell's centre times 2/sqrt(3) times
+		 * the quilted cubic of |o| (measured through camera ray
+		 * perturbation to 3e-4, and on a lit plane). */
+		vec3 o = v3(q.x - floor(q.x) - 0.5, q.y - floor(q.y) - 0.5, q.z - floor(q.z) - 0.5);
+		double t = v3_len(o), it = 1 - t;
+		double c0 = (float)pt->f[0], c1 = (float)pt->f[1];
+		double k = c0 * 3 * t * it * it + c1 * 3 * t * t * it + t * t * t;
+		d = v3_scale(o, amount * k * 1.154700538);
+		break;
+	}
 	case PAT_FACETS: {
 		/* facets size F: the normal quantised to a grid of cell size F and
 		 * turned by the cell's random direction; coords S: the normal of

@@ -33,6 +33,7 @@ void tracer_init(struct tracer *tr, const struct prepared *p)
 	tr->illum = malloc((tr->lights->illum_points ? tr->lights->illum_points : 1) * sizeof *tr->illum);
 	if (!tr->last_blocker || !tr->lit || !tr->illum) abort();
 	area_scratch_init(&tr->area, tr->lights->max_samples);
+	tr->camera_limit = camera_ray_limit(&p->scene->camera);
 }
 
 void tracer_free(struct tracer *tr)
@@ -816,7 +817,7 @@ static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray
 	const struct prepared *p = tr->p;
 	tr->stats.rays[kind]++;
 	struct hit h;
-	if (!trace_closest(p, r, 0, INFINITY, skip, &h)) {
+	if (!trace_closest(p, r, 0, kind == RAY_CAMERA ? tr->camera_limit : INFINITY, skip, &h)) {
 		vec3 dir = v3_norm(r->dir);
 		struct rgbft bg = atmos_escape(p, dir);
 		if (p->features & (FEAT_FOG | FEAT_RAINBOW))

@@ -30,6 +30,7 @@ struct tracer {
 	double transmit;
 	double camera_transmit;
 	int camera_rays;
+	double camera_limit;                 /* how far camera rays see (camera_ray_limit) */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);

@@ -64,6 +64,8 @@ void camera_copy(struct camera *dst, const struct camera *src)
 		pigment_ref(dst->bokeh);
 	if (dst->mesh)
 		dst->mesh->refs++;
+	if (dst->normal)
+		normal_ref(dst->normal);
 }
 
 void mesh_cam_unref(struct mesh_cam *m)
@@ -75,12 +77,21 @@ void mesh_cam_unref(struct mesh_cam *m)
 	free(m);
 }
 
+double camera_ray_limit(const struct camera *c)
+{
+	if (c->kind == CAMERA_MESH && c->mesh && c->mesh->max_dist > 0)
+		return c->mesh->max_dist;
+	return INFINITY;
+}
+
 void camera_clear(struct camera *c)
 {
 	pigment_unref(c->bokeh);
 	c->bokeh = NULL;
 	mesh_cam_unref(c->mesh);
 	c->mesh = NULL;
+	normal_unref(c->normal);
+	c->normal = NULL;
 }
 
 void camera_update(struct camera *c)
@@ -123,7 +134,10 @@ bool camera_look_at(struct camera *c, vec3 at, bool *along_sky)
 {
 	double dl = v3_len(c->direction), rl = v3_len(c->right), ul = v3_len(c->up);
 	/* A left-handed frame has right = up x direction pointing along right;
-	 * a scene that flips right (right -x*4/3) keeps the flip. */
+	 * a scene that flips right (right -x*4/3) keeps the flip. So does a
+	 * frame whose handedness is 0 (up along direction, or right across
+	 * both): measured, `right x up z` (direction z) looking straight down
+	 * or at any other point sees the world mirrored, as with right -x. */
 	double hand = v3_dot(v3_cross(c->up, c->direction), c->right);
 	*along_sky = false;
 	vec3 d = v3_sub(at, c->location);
@@ -140,7 +154,7 @@ bool camera_look_at(struct camera *c, vec3 at, bool *along_sky)
 	}
 	r = v3_norm(r);
 	vec3 u = v3_norm(v3_cross(d, r));
-	if (hand < 0)
+	if (!(hand > 0))
 		r = v3_neg(r);
 	c->direction = v3_scale(d, dl);
 	c->right = v3_scale(r, rl);
@@ -315,15 +329,16 @@ static bool mesh_face_ray(const struct camera *c, const struct camera_face *f, v
 }
 
 /* The barycentric weights (of corners 1 and 2) of uv point (u, v) in the
- * face's uv triangle; false outside it or where the uv triangle turns
- * clockwise (measured: POV-Ray finds no face there). */
+ * face's uv triangle, which may turn either way (measured: a face whose uv
+ * triangle turns clockwise shoots its ray as one turning anticlockwise
+ * does); false outside it or where the triangle is flat. */
 static bool uv_weights(const struct camera_face *f, double u, double v, double *b1, double *b2)
 {
 	double ax = f->uv[0][0], ay = f->uv[0][1];
 	double e1x = f->uv[1][0] - ax, e1y = f->uv[1][1] - ay;
 	double e2x = f->uv[2][0] - ax, e2y = f->uv[2][1] - ay;
 	double det = e1x * e2y - e1y * e2x;
-	if (!(det > 0))
+	if (det == 0 || !isfinite(det))
 		return false;
 	double px = u - ax, py = v - ay;
 	*b1 = (px * e2y - py * e2x) / det;

@@ -12,6 +12,7 @@
 #include <stdbool.h>
 
 struct pigment;
+struct normal;
 
 /* One face of a mesh camera, in world space. */
 struct camera_face {
@@ -55,6 +56,7 @@ struct camera {
 	double confidence, variance;
 	struct pigment *bokeh; /* focal blur's lens shape (a reference), or NULL: round */
 	struct mesh_cam *mesh; /* CAMERA_MESH: its faces (a reference) */
+	struct normal *normal; /* camera ray perturbation (a reference), or NULL */
 	struct srcpos pos;
 
 	/* Derived by camera_update from the fields above; read by camera_ray. */
@@ -103,6 +105,12 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
  * position (x, y) (see camera_ray). Returns false when no face belongs to
  * it: that ray is not shot and does not count in the pixel's average. */
 bool camera_mesh_ray(const struct camera *c, double x, double y, int w, int h, int k, struct ray *r);
+/* How far camera rays see: a mesh camera's max_distance, INFINITY for
+ * every other camera. A camera ray that meets nothing closer (measured
+ * from its origin, its direction being unit) sees the background; rays
+ * after the first hit are not limited (measured in POV-Ray: a mirror at
+ * distance 3 shows a plane 6 further with max_distance 3.5). */
+double camera_ray_limit(const struct camera *c);
 /* Drop a reference to m (NULL is fine). */
 void mesh_cam_unref(struct mesh_cam *m);
 

@@ -176,6 +176,9 @@ void texture_prepare(struct texture *t);
 struct rgbft pattern_block_default(enum pattern_kind k, int i);
 /* The pigment's colour at ctx. */
 struct rgbft pigment_eval(const struct pigment *pg, const struct pattern_ctx *ctx);
+/* The height whose slope tilts a normal, for a value v of nm's pattern:
+ * v through nm's slope_map if it has one. */
+double normal_height(const struct normal *nm, double v);
 /* The normal n (unit, world space) perturbed by nm at ctx; unit. */
 vec3 normal_eval(const struct normal *nm, vec3 n, const struct pattern_ctx *ctx);
 

@@ -239,16 +239,20 @@ static double slope_height(const struct blend_map *m, double v)
 	return h00 * a->slope[0] + h10 * d * a->slope[1] + h01 * b->slope[0] + h11 * d * b->slope[1];
 }
 
+double normal_height(const struct normal *nm, double v)
+{
+	if (nm->map && nm->map->kind == MAP_SLOPE)
+		return slope_height(nm->map, v);
+	return v;
+}
+
 /* The pattern's height at world point p: its value, through the slope map
  * when there is one. */
 static double bump_height(const struct normal *nm, vec3 p, const struct pattern_ctx *ctx)
 {
 	struct pattern_ctx c = *ctx;
 	c.p = p;
-	double v = pattern_value(&nm->pat, &c);
-	if (nm->map && nm->map->kind == MAP_SLOPE)
-		return slope_height(nm->map, v);
-	return v;
+	return normal_height(nm, pattern_value(&nm->pat, &c));
 }
 
 /* The normal tilted against the numerical gradient of the height field:

@@ -31,7 +31,8 @@
 
 #include "testutil.h"
 
-/* Parse `camera { items }` and return the scene's camera. */
+/* Parse `camera { items }` and return the scene's camera (camera_clear
+ * it if it may hold references: a mesh camera). */
 static struct camera parse_cam(const char *items)
 {
 	char path[64];
@@ -48,7 +49,8 @@ static struct camera parse_cam(const char *items)
 	int rc = parse_scene(sm, &d, &o, s);
 	if (rc != 0)
 		fail_msg("camera { %s } did not parse", items);
-	struct camera c = s->camera;
+	struct camera c;
+	camera_copy(&c, &s->camera); /* a mesh camera's faces outlive the scene */
 	scene_free(s);
 	src_free(sm);
 	remove(path);
@@ -385,6 +387,164 @@ static void test_lens(void **state)
 	assert_near(r.org.x + t * r.dir.x, 0, 1e-9);
 }
 
+/* The quad of the mesh-camera tests: 4 x 2 in the plane z = 0, uv the
+ * unit square, faces turning clockwise in uv (their rays go along +z),
+ * vertex normals leaning out by 0.3 in x. "} ... camera {" puts the
+ * declaration before the camera block. */
+#define MESH_QUAD                                                                                            \
+	"} #declare M = mesh2 { vertex_vectors { 4, <-2,-1,0>, <2,-1,0>, <2,1,0>, <-2,1,0> } "                \
+	"normal_vectors { 4, <-0.3,0,1>, <0.3,0,1>, <0.3,0,1>, <-0.3,0,1> } "                                 \
+	"uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> } face_indices { 2, <0,2,1>, <0,3,2> } } camera { "
+
+/* Where the ray of pixel (px, py) of a w x h image meets the plane z = 5. */
+static double mesh_hit_x(const struct camera *c, int px, int py, int w, int h)
+{
+	struct ray r;
+	assert_true(camera_mesh_ray(c, px + 0.5, py + 0.5, w, h, 0, &r));
+	return r.org.x + (5 - r.org.z) / r.dir.z * r.dir.x;
+}
+
+/* Mesh camera, distribution 3: the ray of each pixel, smooth or not, and
+ * max_distance. Measured in POV-Ray (6 x 3 and 4 x 4, no antialiasing,
+ * File_Gamma 1, 16-bit PPM) looking at the plane z = 5 with pigment
+ * gradient x scaled 8 and moved -4 (value (x + 4) / 8), middle row. */
+static void test_mesh_camera(void **state)
+{
+	(void)state;
+	struct camera c = parse_cam(MESH_QUAD "mesh_camera { 1 3 mesh { M } } location <0,0,1>");
+	assert_int_equal(c.kind, CAMERA_MESH);
+	assert_true(isinf(camera_ray_limit(&c)));
+	/* Flat: POV-Ray's row 0.25 0.375 0.5 0.5625 at 4 x 4 (8-bit sRGB
+	 * 137 165 188 198); location's z moves the origin 1 along the ray. */
+	static const double flat[4] = {0.25, 0.375, 0.5, 0.5625};
+	for (int i = 0; i < 4; i++)
+		assert_near((mesh_hit_x(&c, i, 1, 4, 4) + 4) / 8, flat[i], 1e-4);
+	struct ray r;
+	assert_true(camera_mesh_ray(&c, 0.5, 1.5, 4, 4, 0, &r));
+	assert_vec_near(r.org, -2, 0.5, 1, 1e-12);
+	assert_vec_near(r.dir, 0, 0, 1, 1e-12);
+	camera_clear(&c);
+	/* Smooth: the normals interpolated. */
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 mesh { M } smooth }");
+	static const double smooth[6] = {0.06250, 0.20833, 0.35416, 0.50001, 0.64584, 0.71875};
+	for (int i = 0; i < 6; i++)
+		assert_near((mesh_hit_x(&c, i, 1, 6, 3) + 4) / 8, smooth[i], 1e-4);
+	camera_clear(&c);
+	/* max_distance: 3.9 sees the background and 4.1 the plane from the
+	 * origin moved 1 along the ray; 0 and below set no limit. */
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 4.1 mesh { M } } location <0,0,1>");
+	assert_near(camera_ray_limit(&c), 4.1, 0);
+	camera_clear(&c);
+	c = parse_cam(MESH_QUAD "mesh_camera { 1 3 -1 mesh { M } }");
+	assert_true(isinf(camera_ray_limit(&c)));
+	camera_clear(&c);
+	c = parse_cam("location 0");
+	assert_true(isinf(camera_ray_limit(&c)));
+}
+
+/* Distributions 0 to 2: which faces a pixel's rays leave from. Face i of
+ * mesh A lies at x = i, of mesh B at x = 16 + i, all facing +z; POV-Ray
+ * (4 x 3, no antialiasing, 16-bit linear PPM) looked at the plane z = 5
+ * with pigment gradient x scaled 32, so each pixel holds the mean x of
+ * its rays' faces over 32. The tables give that mean x, row by row. */
+struct dist_case {
+	const char *cam;
+	double x[12];
+};
+
+/* Declares mesh A of NA faces at x = 0.. and B of NB at x = 16.. */
+#define MESH_FACES(NA, NB)                                                                                   \
+	"} #macro Faces(N, X0) mesh { #for (I, 0, N - 1) triangle { <X0 + I - 0.2, -0.2, 0>, "                  \
+	"<X0 + I, 0.2, 0>, <X0 + I + 0.2, -0.2, 0> } #end } #end "                                             \
+	"#declare A = Faces(" #NA ", 0) #declare B = Faces(" #NB ", 16) camera { "
+
+static const struct dist_case dist_cases[] = {
+	/* The first two rows share the first row of faces. */
+	{MESH_FACES(12, 12) "mesh_camera { 1 0 mesh { A } }", {0, 1, 2, 3, 0, 1, 2, 3, 4, 5, 6, 7}},
+	/* Ray k from mesh k, averaged. */
+	{MESH_FACES(12, 9) "mesh_camera { 2 0 mesh { A } mesh { B } }",
+	 {8, 9, 10, 11, 8, 9, 10, 11, 12, 13, 14, 15}},
+	/* One list of faces; the second ray is never shot. */
+	{MESH_FACES(6, 6) "mesh_camera { 2 1 mesh { A } mesh { B } }",
+	 {0, 1, 2, 3, 0, 1, 2, 3, 4, 5, 16, 17}},
+	{MESH_FACES(5, 6) "mesh_camera { 1 1 mesh { A } mesh { B } }",
+	 {0, 1, 2, 3, 0, 1, 2, 3, 4, 16, 17, 18}},
+	/* Side by side, the face index counting the image's column. */
+	{MESH_FACES(6, 6) "mesh_camera { 1 2 mesh { A } mesh { B } }",
+	 {0, 1, 18, 19, 0, 1, 18, 19, 2, 3, 20, 21}},
+};
+
+static void test_mesh_distributions(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < sizeof dist_cases / sizeof dist_cases[0]; i++) {
+		const struct dist_case *k = &dist_cases[i];
+		struct camera c = parse_cam(k->cam);
+		for (int py = 0; py < 3; py++)
+			for (int px = 0; px < 4; px++) {
+				double sum = 0;
+				int n = 0;
+				for (int ray = 0; ray < c.mesh->rays; ray++) {
+					struct ray r;
+					if (!camera_mesh_ray(&c, px + 0.5, py + 0.5, 4, 3, ray, &r))
+						continue;
+					assert_vec_near(r.dir, 0, 0, 1, 1e-12);
+					sum += r.org.x;
+					n++;
+				}
+				assert_true(n > 0);
+				if (fabs(sum / n - k->x[py * 4 + px]) > 1e-9)
+					fail_msg("%s: pixel (%d, %d) x %g, POV-Ray %g", k->cam, px, py, sum / n, k->x[py * 4 + px]);
+			}
+		camera_clear(&c);
+	}
+}
+
+/* look_at and the frame's handedness: right is flipped unless
+ * (up x direction) . right > 0, so a handedness of 0 mirrors the image as
+ * a left-handed one does. Measured in POV-Ray (3 x 3, plane y = 0 with
+ * gradient x and z pigments repeating every 40 units, 16-bit linear):
+ * where the top-left and top-right pixels' rays meet the plane, modulo 40. */
+struct hand_case {
+	const char *cam;
+	double left[2], right[2]; /* (x, z) */
+};
+
+static const struct hand_case hand_cases[] = {
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5", {2.17, 2.17}, {-1.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up y*5", {-1.17, 2.17}, {2.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5 direction y", {2.17, 2.17},
+	 {-1.17, 2.17}},
+	{"orthographic location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5 direction -y", {-1.17, 2.17},
+	 {2.17, 2.17}},
+	{"location <0.5,10,0.5> look_at <0.5,0,0.5> right x*5 up z*5", {17.17, 17.17}, {-16.17, 17.17}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up z*5", {-6.64, 11.05}, {-6.64, -10.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up y*5", {-6.64, -10.05}, {-6.64, 11.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right z*5 up y*5", {-6.64, 11.05}, {-6.64, -10.05}},
+	{"location <0.5,10,0.5> look_at <3,0,0.5> right x*5 up y*5 direction x", {-6.64, 11.05}, {-6.64, -10.05}},
+};
+
+static void test_look_at_handedness(void **state)
+{
+	(void)state;
+	for (size_t i = 0; i < sizeof hand_cases / sizeof hand_cases[0]; i++) {
+		const struct hand_case *k = &hand_cases[i];
+		struct camera c = parse_cam(k->cam);
+		for (int side = 0; side < 2; side++) {
+			struct ray r;
+			assert_true(camera_ray(&c, side ? 2.5 : 0.5, 0.5, 3, 3, 0, 0, &r));
+			double t = -r.org.y / r.dir.y;
+			double x = r.org.x + t * r.dir.x, z = r.org.z + t * r.dir.z;
+			const double *want = side ? k->right : k->left;
+			/* The pigments repeat every 40 units. */
+			double dx = remainder(x - want[0], 40), dz = remainder(z - want[1], 40);
+			if (fabs(dx) > 0.01 || fabs(dz) > 0.01)
+				fail_msg("camera { %s } %s pixel: (%.2f, %.2f), POV-Ray (%.2f, %.2f)", k->cam,
+				         side ? "top-right" : "top-left", x, z, want[0], want[1]);
+		}
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -392,6 +552,9 @@ int main(void)
 		cmocka_unit_test(test_origins),
 		cmocka_unit_test(test_parse_items),
 		cmocka_unit_test(test_lens),
+		cmocka_unit_test(test_mesh_camera),
+		cmocka_unit_test(test_mesh_distributions),
+		cmocka_unit_test(test_look_at_handedness),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,14 @@
+// cam-normal-quilted.pov: camera ray perturbation, normal { quilted 0.5 control0 0.4 control1 0.9 scale 0.12 translate 0.5*z }:
+// the pattern is taken at the image position (u, v, 0) and the rays are
+// turned in the pattern's space (doc/lights-cameras.md, "Camera normal").
+#version 3.7;
+global_settings { assumed_gamma 1.0 }
+background { color rgb <0.1, 0.2, 0.4> }
+camera {
+  location <0, 1.5, -4> look_at <0, 1, 2> angle 55
+  normal { quilted 0.5 control0 0.4 control1 0.9 scale 0.12 translate 0.5*z }
+}
+sphere { <0, 1, 2>, 1 pigment { checker color rgb <1, 0.3, 0.1> color rgb <1, 0.9, 0.4> scale 0.25 } }
+cylinder { <1.8, 0, 1>, <1.8, 2.2, 1>, 0.3 pigment { color rgb <0.3, 0.8, 0.4> } }
+plane { y, 0 pigment { checker color rgb 0.6 color rgb 0.2 } }
+light_source { <-10, 20, -10> color rgb 1 }
