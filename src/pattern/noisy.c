@@ -2,12 +2,12 @@
  * perturbations of bumps, dents, ripples, waves, wrinkles and facets.
  *
  * Values measured against POV-Ray 3.7 with `function { pattern { K } }`:
- * bozo, spotted, bumps, dents, granite, wrinkles, marble, agate, ripples,
- * waves, and their turbulence (generators 1 and 2) agree with it to 1e-10;
- * so do cells and crackle, from POV-Ray's cell random numbers
+ * bozo, spotted, bumps, dents, granite, wrinkles, marble, wood, agate,
+ * ripples, waves, and their turbulence (generators 1, 2 and 3) agree with
+ * it to 1e-10; so do cells and crackle, from POV-Ray's cell random numbers
  * (cell_table.h). The normals of bumps, dents, wrinkles, ripples and waves
  * were measured from renders (kinds.h) and agree to 3e-5; facets' normal
- * follows POV-Ray's description. */
+ * follows POV-Ray's description but not its renders (doc/materials.md). */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
