@@ -6,7 +6,14 @@
 #define NOISE_HASH_SIZE 4096
 #define NOISE_RTABLE_SIZE 267
 
+/* Generator 3 (noise3_gen.py): its hash table, the offset its hash adds
+ * to x, and its gradients. */
+#define NOISE3_SIZE 2048
+#define NOISE3_X0 1599
+
 extern const unsigned short noise_hash[NOISE_HASH_SIZE];
 extern const double noise_rtable[NOISE_RTABLE_SIZE];
+extern const unsigned short noise3_hash[NOISE3_SIZE];
+extern const double noise3_grad[NOISE3_SIZE][3];
 
 #endif

@@ -2,13 +2,12 @@
  * perturbations of bumps, dents, ripples, waves, wrinkles and facets.
  *
  * Values measured against POV-Ray 3.7 with `function { pattern { K } }`:
- * bozo, spotted, bumps, dents, granite, wrinkles, marble, agate, ripples,
- * waves, and their turbulence (generators 1 and 2) agree with it to 1e-10;
- * so do cells and crackle, from POV-Ray's cell random numbers
+ * bozo, spotted, bumps, dents, granite, wrinkles, marble, wood, agate,
+ * ripples, waves, and their turbulence (generators 1, 2 and 3) agree with
+ * it to 1e-10; so do cells and crackle, from POV-Ray's cell random numbers
  * (cell_table.h). The normals of bumps, dents, wrinkles, ripples and waves
  * were measured from renders (kinds.h) and agree to 3e-5; facets' normal
- * follows POV-Ray's description. Not POV-Ray's: generator 3 (noise.c) and
- * wood's turbulence. */
+ * follows POV-Ray's description but not its renders (doc/materials.md). */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
@@ -37,8 +36,8 @@ static double turb_noise(vec3 p, int gen)
 	return n < 0 ? 0 : n > 1 ? 1 : n;
 }
 
-/* The classic turbulence marble, wood and agate add to their value:
- * 2 × amount.x × turbulence1 (measured for marble and wood). */
+/* The classic turbulence marble adds to its value: 2 × amount.x ×
+ * turbulence1 (measured). */
 static double value_turbulence(const struct pattern *pt, vec3 q, int gen)
 {
 	if (!pt->has_turbulence)
@@ -92,9 +91,20 @@ PATTERN_FN(marble)
 	return q.x + value_turbulence(pt, q, gen_of(pt, ctx));
 }
 
+/* wood: the distance from the z axis. Its turbulence is its own
+ * (measured to 1e-13): with D the vector turbulence at q (the pattern's
+ * octaves, omega and lambda, not its amount; the same for every
+ * generator, as all vector noise) and T the amount, x moves by
+ * sin(2 pi T.x (x + D.x)) and y by sin(2 pi T.y (y + D.y)). */
 PATTERN_FN(wood)
 {
-	return sqrt(q.x * q.x + q.y * q.y) + value_turbulence(pt, q, gen_of(pt, ctx));
+	double x = q.x, y = q.y;
+	if (pt->has_turbulence) {
+		vec3 d = turbulence3(q, &pt->turb, gen_of(pt, ctx));
+		x += sin(2 * M_PI * pt->turb.amount.x * (q.x + d.x));
+		y += sin(2 * M_PI * pt->turb.amount.y * (q.y + d.y));
+	}
+	return sqrt(x * x + y * y);
 }
 
 /* agate: ((1 + sin(2π × 1.1 × u)) / 2)^0.77 with u = z + 26/11 ×

@@ -188,9 +188,10 @@ int pavement_pattern_count(int sides, int tiles);
 
 /* POV-Ray's noise: a smooth pseudo-random function of space in [0, 1]
  * with mean 0.5, by generator 1 (original), 2 (range corrected) or 3
- * (Perlin's improved noise). */
+ * (Perlin's gradient noise). */
 double noise3(vec3 p, int generator);
-/* Its vector form, each component in [-1, 1] (turbulence, bumps). */
+/* Its vector form, each component in [-1, 1] (turbulence, bumps): the
+ * same for every generator, as POV-Ray's. */
 vec3 dnoise3(vec3 p, int generator);
 /* Turbulence: the sum of octaves of |noise| (scalar) or of dnoise (vector). */
 double turbulence1(vec3 p, const struct turbulence *t, int generator);

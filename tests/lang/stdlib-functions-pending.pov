@@ -1,9 +1,8 @@
 // functions.inc: the functions whose values lucent does not share with
-// POV-Ray yet (listed in pending.list): f_noise_generator with generator 3
-// (the bozo pattern's generator 3 differs too), f_comma and f_helical_torus
+// POV-Ray yet (listed in pending.list): f_comma and f_helical_torus
 // (approximations), and f_ridged_mf (most parameters); agate, crackle,
-// f_ridge (stdlib-functions-ridge), ripples and waves
-// (stdlib-functions-waves) match.
+// f_noise_generator with generator 3 (pattern-noise-generator3), f_ridge
+// (stdlib-functions-ridge), ripples and waves (stdlib-functions-waves) match.
 #version 3.7;
 #include "functions.inc"
 #macro S(N, V) #debug concat(N, " ", str(V, 0, 6), "\n") #end

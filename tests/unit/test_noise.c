@@ -100,6 +100,25 @@ static void test_noise_character(void **state)
 	assert_true(noise3(v3(0.3, 0.2, 0.1), 3) == noise3(v3(0.3, 0.2, 0.1), 3));
 }
 
+/* Generator 3 exactly: POV-Ray's printed function { pattern { bozo
+ * noise_generator 3 } } at random points (%.14f), near the origin and
+ * thousands of units away; and the vector noise (turbulence), which is
+ * generator 2's whatever the generator: warp { turbulence <0.1, 0, 0>
+ * octaves 1 } on function { x } moved (0.7, 0.6, 0.55) to x = 0.695217575521
+ * with noise_generator 1, 2 and 3 alike. */
+static void test_generator3(void **state)
+{
+	(void)state;
+	assert_near(noise3(v3(-17.6167235167, -34.9150826075, 15.0934473040), 3), 0.46750992743270, 1e-13);
+	assert_near(noise3(v3(-42.7563713332, 3.5882004307, -13.4311083087), 3), 0.55830175686024, 1e-13);
+	assert_near(noise3(v3(-44.2001075225, 0.7435733189, -46.2504341558), 3), 0.46880665133971, 1e-13);
+	assert_near(noise3(v3(1956.5153930136, 2370.7836224522, -1514.9529419228), 3), 0.62570908241098, 1e-13);
+	assert_near(noise3(v3(461.8158847928, -726.6748352275, -1224.1927104302), 3), 0.21563628845895, 1e-13);
+	vec3 p = v3(0.7, 0.6, 0.55);
+	for (int gen = 1; gen <= 3; gen++)
+		assert_near(p.x + 0.1 * dnoise3(p, gen).x, 0.695217575521, 1e-12);
+}
+
 static void test_dnoise_and_turbulence(void **state)
 {
 	(void)state;
@@ -600,6 +619,7 @@ int main(void)
 		cmocka_unit_test(test_ripples_waves_measured),
 		cmocka_unit_test(test_ripples_waves_exact),
 		cmocka_unit_test(test_noise_character),
+		cmocka_unit_test(test_generator3),
 		cmocka_unit_test(test_dnoise_and_turbulence),
 		cmocka_unit_test(test_patterns_measured),
 		cmocka_unit_test(test_warp_repeat),

@@ -3,8 +3,11 @@
  * The values at three points for each tiling were printed by POV-Ray 3.7.0:
  *   #declare G = function { pigment { tiling N color_map { [0 rgb 0] [1 rgb 1] } } }
  *   #debug str(G(x, 0, z).red, 0, 9)
- * (tilings 26 and 27 also far from the origin, where an aperiodic tiling
- * could drift). They went through POV-Ray's single-precision colours, hence the
+ * (tilings 25 to 27 also far from the origin, where an aperiodic tiling
+ * could drift; for 25 a point on the face and one in the bevel of each of
+ * its six kinds of tile, a star's and a boat's concave corner, a point
+ * 1e-9 off an edge, where the value stays 1e-6 inside its band, and the
+ * origin, where POV-Ray gives 1). They went through POV-Ray's single-precision colours, hence the
  * tolerance of 1e-6. The hand-derived cases check the rule itself: tiling 1
  * is unit squares, 0 at a centre and 1 on an edge, rising linearly between
  * (the bevel is the square's inradius 0.5); y is ignored. */
@@ -49,6 +52,17 @@ static const struct tcase cases[] = {
 	{22, {{0.3137, 0.7291, 0.279304266}, {-1.8412, 2.2719, 0.666666687}, {3.1071, -2.6533, 0.666666687}}},
 	{23, {{0.3137, 0.7291, 0.180600002}, {-1.8412, 2.2719, 0.666666985}, {3.1071, -2.6533, 0.210092947}}},
 	{24, {{0.3137, 0.7291, 0.108360000}, {-1.8412, 2.2719, 0.800000191}, {3.1071, -2.6533, 0.126055777}}},
+	{25, {{6.5165935863, -8.9330350662, 0.000000000}, {165.3618088194, -235.1682785611, 0.012885146},
+	      {15.7155256557, -25.6840958571, 0.166667670}}},
+	{25, {{2.0420887231, 1.6557514046, 0.280154258}, {2.3534081322, 10.6698286350, 0.333334327},
+	      {145.0721935564, 177.1161393394, 0.384742528}}},
+	{25, {{-732.1214149237, 1504.8081123722, 0.500001013}, {28.5604541848, -2.7876006245, 0.620204508},
+	      {2730.4365116909, 2256.2286144453, 0.666667640}}},
+	{25, {{22.3444659262, -12.6416899352, 0.763994575}, {-0.7692398666, 2.2106727472, 0.953458905},
+	      {-1.8, 0, 0.833334327}}},
+	{25, {{5.6786, -0.478, 0.654365838}, {-4.88, -7.84, 0.724475265}, {0.688191, 0, 0.499998987}}},
+	{25, {{0, 0, 1.000000000}, {0.5, 0, 0.059081387}, {0.68819096, 1e-9, 0.166665673}}},
+	{27, {{-5.2, 1e-9, 0.499998987}, {0, 0, 1.000000000}, {1e-8, 0, 0.499998987}}},
 	{26, {{0.3137, 0.7291, 0.105704799}, {-1.8412, 2.2719, 0.918031156}, {3.1071, -2.6533, 0.000000000}}},
 	{26, {{41.37, -28.91, 0.000000000}, {-77.3, 63.2, 0.312077105}, {0, 0.3, 0.293267638}}},
 	{27, {{0.3137, 0.7291, 0.374729484}, {-1.8412, 2.2719, 0.729970336}, {3.1071, -2.6533, 0.219758824}}},
