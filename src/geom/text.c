@@ -25,6 +25,7 @@
 #include "geom/solve.h"
 
 #include "font/ttf.h"
+#include "geom/collect.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -209,29 +210,10 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 	}
 }
 
-struct closest {
-	double t;
-	int part;
-	double u;
-	bool found;
-};
-
-static bool take_closest(void *ctx, double t, int part, double u)
-{
-	struct closest *c = ctx;
-	if (!c->found || t < c->t) {
-		c->t = t;
-		c->part = part;
-		c->u = u;
-		c->found = true;
-	}
-	return true;
-}
-
 static bool text_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
 {
-	struct closest c = {.found = false};
-	text_hits((const struct text *)o, r, tmin, tmax, take_closest, &c);
+	struct hit_closest c = {.found = false};
+	text_hits((const struct text *)o, r, tmin, tmax, hit_take_closest, &c);
 	if (!c.found)
 		return false;
 	h->t = c.t;
@@ -240,33 +222,10 @@ static bool text_intersect(const struct object *o, const struct ray *r, double t
 	return true;
 }
 
-struct all {
-	const struct object *o;
-	struct hit *out;
-	int n, max;
-};
-
-/* Keep the `max` nearest hits, sorted. */
-static bool take_all(void *ctx, double t, int part, double u)
-{
-	struct all *a = ctx;
-	if (a->max <= 0)
-		return false;
-	if (a->n == a->max && t >= a->out[a->n - 1].t)
-		return true;
-	int i = a->n < a->max ? a->n++ : a->n - 1;
-	while (i > 0 && a->out[i - 1].t > t) {
-		a->out[i] = a->out[i - 1];
-		i--;
-	}
-	a->out[i] = (struct hit){.t = t, .obj = a->o, .part = part, .u = u};
-	return true;
-}
-
 static int text_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out, int max)
 {
-	struct all a = {.o = o, .out = out, .max = max};
-	text_hits((const struct text *)o, r, tmin, tmax, take_all, &a);
+	struct hit_all a = {.o = o, .out = out, .max = max};
+	text_hits((const struct text *)o, r, tmin, tmax, hit_take_all, &a);
 	return a.n;
 }
 
