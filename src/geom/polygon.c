@@ -92,7 +92,8 @@ static struct object *polygon_copy(const struct object *o)
 	*c = *P;
 	c->edge = malloc((size_t)(P->nedge ? P->nedge : 1) * sizeof *c->edge);
 	if (!c->edge) abort();
-	memcpy(c->edge, P->edge, (size_t)P->nedge * sizeof *c->edge);
+	if (P->nedge)
+		memcpy(c->edge, P->edge, (size_t)P->nedge * sizeof *c->edge);
 	return &c->base;
 }
 

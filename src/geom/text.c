@@ -267,8 +267,10 @@ static struct object *text_copy(const struct object *o)
 	c->seg = malloc((size_t)(T->nseg ? T->nseg : 1) * sizeof *c->seg);
 	c->glyph = malloc((size_t)(T->nglyph ? T->nglyph : 1) * sizeof *c->glyph);
 	if (!c->seg || !c->glyph) abort();
-	memcpy(c->seg, T->seg, (size_t)T->nseg * sizeof *c->seg);
-	memcpy(c->glyph, T->glyph, (size_t)T->nglyph * sizeof *c->glyph);
+	if (T->nseg) /* a text of spaces or no characters has none (and no array) */
+		memcpy(c->seg, T->seg, (size_t)T->nseg * sizeof *c->seg);
+	if (T->nglyph)
+		memcpy(c->glyph, T->glyph, (size_t)T->nglyph * sizeof *c->glyph);
 	return &c->base;
 }
 
