@@ -220,6 +220,17 @@ static struct aabb extent_box(const struct object *o, int depth)
 	return object_world_bounds(o);
 }
 
+
+/* The integer a bitwise function works on: POV-Ray's 32-bit int, with any
+ * value outside its range (and NaN) becoming the smallest int (measured:
+ * bitwise_or(3e9, 1) is -2147483647, bitwise_and(2.9e39, 7) is 0). */
+static int32_t bit_int(double x)
+{
+	if (!(x >= -2147483648.0 && x < 2147483648.0))
+		return INT32_MIN;
+	return (int32_t)x;
+}
+
 static struct value f_trace(struct parser *p, struct srcpos at)
 {
 	struct value o = arg_item(p, VAL_OBJECT, "trace");
@@ -309,9 +320,9 @@ struct value builtin_call(struct parser *p)
 			switch (k) {
 			case KW_MIN: acc = x < acc ? x : acc; break;
 			case KW_MAX: acc = x > acc ? x : acc; break;
-			case KW_BITWISE_AND: acc = (double)((int64_t)acc & (int64_t)x); break;
-			case KW_BITWISE_OR: acc = (double)((int64_t)acc | (int64_t)x); break;
-			default: acc = (double)((int64_t)acc ^ (int64_t)x); break;
+			case KW_BITWISE_AND: acc = (double)(bit_int(acc) & bit_int(x)); break;
+			case KW_BITWISE_OR: acc = (double)(bit_int(acc) | bit_int(x)); break;
+			default: acc = (double)(bit_int(acc) ^ bit_int(x)); break;
 			}
 		}
 		rparen(p);
