@@ -1,5 +1,5 @@
 /* collect.h: collectors for the crossings that a shape's hit enumerator
- * reports one by one, in any order (prism, lathe and text walk their
+ * reports one by one, in any order (prism, lathe, sor and text walk their
  * pieces this way): the closest crossing, for the ray's first hit, or the
  * nearest `max` crossings sorted by distance, for CSG's all_hits. Each
  * takes (ctx, t, part, u) and returns whether the enumeration should go

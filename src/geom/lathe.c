@@ -24,6 +24,7 @@
  * times. */
 #include "geom/shapes2.h"
 #include "geom/solve.h"
+#include "geom/spline2.h"
 #include "geom/collect.h"
 
 #include <math.h>
@@ -45,82 +46,19 @@ struct lathe {
 	double rmax, ylo, yhi; /* bounds */
 };
 
-static double poly3(const double c[4], double u)
-{
-	return ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
-}
-
-static double dpoly3(const double c[4], double u)
-{
-	return (3 * c[3] * u + 2 * c[2]) * u + c[1];
-}
-
-/* The extent of c(u) for u in [0, 1]. */
-static void extent(const double c[4], double *lo, double *hi)
-{
-	double a = poly3(c, 0), b = poly3(c, 1);
-	*lo = fmin(a, b);
-	*hi = fmax(a, b);
-	double r[2];
-	int n = solve_quadratic(3 * c[3], 2 * c[2], c[1], r);
-	for (int i = 0; i < n; i++)
-		if (r[i] > 0 && r[i] < 1) {
-			double v = poly3(c, r[i]);
-			*lo = fmin(*lo, v);
-			*hi = fmax(*hi, v);
-		}
-}
+_Static_assert((int)LATHE_BEZIER_SPLINE == (int)SPLINE2_BEZIER && (int)LATHE_CUBIC_SPLINE == (int)SPLINE2_CUBIC &&
+                   (int)LATHE_QUADRATIC_SPLINE == (int)SPLINE2_QUADRATIC,
+               "lathe's splines are spline2's");
 
 /* The piece from the control points p (as many as the spline needs). */
 static struct lseg make_seg(enum lathe_spline kind, const double (*p)[2])
 {
 	struct lseg s;
 	memset(&s, 0, sizeof s);
-	for (int k = 0; k < 2; k++) {
-		double *c = k == 0 ? s.r : s.y;
-		switch (kind) {
-		case LATHE_LINEAR_SPLINE:
-			c[0] = p[0][k];
-			c[1] = p[1][k] - p[0][k];
-			s.deg = 1;
-			break;
-		case LATHE_QUADRATIC_SPLINE:
-			c[0] = p[1][k];
-			c[1] = (p[2][k] - p[0][k]) / 2;
-			c[2] = (p[2][k] + p[0][k]) / 2 - p[1][k];
-			s.deg = 2;
-			break;
-		case LATHE_CUBIC_SPLINE: {
-			double m1 = (p[2][k] - p[0][k]) / 2, m2 = (p[3][k] - p[1][k]) / 2;
-			c[0] = p[1][k];
-			c[1] = m1;
-			c[2] = 3 * (p[2][k] - p[1][k]) - 2 * m1 - m2;
-			c[3] = 2 * (p[1][k] - p[2][k]) + m1 + m2;
-			s.deg = 3;
-			break;
-		}
-		case LATHE_BEZIER_SPLINE:
-			c[0] = p[0][k];
-			c[1] = 3 * (p[1][k] - p[0][k]);
-			c[2] = 3 * (p[0][k] - 2 * p[1][k] + p[2][k]);
-			c[3] = p[3][k] - p[0][k] + 3 * (p[1][k] - p[2][k]);
-			s.deg = 3;
-			break;
-		}
-	}
-	if (kind == LATHE_BEZIER_SPLINE) {
-		s.rlo = s.rhi = p[0][0];
-		s.ylo = s.yhi = p[0][1];
-		for (int i = 1; i < 4; i++) {
-			s.rlo = fmin(s.rlo, p[i][0]);
-			s.rhi = fmax(s.rhi, p[i][0]);
-			s.ylo = fmin(s.ylo, p[i][1]);
-			s.yhi = fmax(s.yhi, p[i][1]);
-		}
-	} else {
-		extent(s.r, &s.rlo, &s.rhi);
-		extent(s.y, &s.ylo, &s.yhi);
-	}
+	double lo[2], hi[2];
+	s.deg = spline2_piece((enum spline2_kind)kind, p, s.r, s.y, lo, hi);
+	s.rlo = lo[0], s.rhi = hi[0];
+	s.ylo = lo[1], s.yhi = hi[1];
 	return s;
 }
 
@@ -179,10 +117,10 @@ static void lathe_hits(const struct lathe *L, const struct ray *r, double tmin, 
 			nr = solve_poly(q, deg, -1e-9, 1 + 1e-9, L->sturm, roots);
 			for (int k = 0; k < nr; k++) {
 				double u = fmin(fmax(roots[k], 0), 1);
-				double yu = poly3(s->y, u), t = (yu - o.y) / d.y;
+				double yu = spline2_at(s->y, u), t = (yu - o.y) / d.y;
 				if (A > 0 && fabs(d.y) * fabs(d.y) < 0.25 * A) {
 					/* A shallow ray: t from the radius is better conditioned. */
-					double ru = poly3(s->r, u), tt[2];
+					double ru = spline2_at(s->r, u), tt[2];
 					int n2 = solve_quadratic(A, B, C - ru * ru, tt);
 					double best = INFINITY;
 					for (int j = 0; j < n2; j++) {
@@ -201,7 +139,7 @@ static void lathe_hits(const struct lathe *L, const struct ray *r, double tmin, 
 			nr = solve_poly(e, s->deg, -1e-9, 1 + 1e-9, L->sturm, roots);
 			for (int k = 0; k < nr; k++) {
 				double u = fmin(fmax(roots[k], 0), 1);
-				double ru = poly3(s->r, u), tt[2];
+				double ru = spline2_at(s->r, u), tt[2];
 				int n2 = solve_quadratic(A, B, C - ru * ru, tt);
 				for (int j = 0; j < n2; j++)
 					if (tt[j] > tmin && tt[j] < tmax && !take(ctx, tt[j], i, u))
@@ -251,9 +189,9 @@ static bool lathe_inside(const struct object *o, vec3 p)
 		int nr = solve_poly(c, s->deg, -eps, 1 + eps, false, rt);
 		for (int k = 0; k < nr; k++) {
 			double u = fmin(fmax(rt[k], 0), 1);
-			if (!(poly3(s->r, u) > R))
+			if (!(spline2_at(s->r, u) > R))
 				continue;
-			double dy = dpoly3(s->y, u);
+			double dy = spline2_slope(s->y, u);
 			if ((dy > 0 && rt[k] < 1 - eps) || (dy < 0 && rt[k] > eps))
 				count++;
 		}
@@ -267,7 +205,7 @@ static vec3 lathe_normal(const struct object *o, vec3 p, const struct hit *h)
 	if (h->part < 0 || h->part >= L->nseg)
 		return v3(0, 1, 0);
 	const struct lseg *s = &L->seg[h->part];
-	double dr = dpoly3(s->r, h->u), dy = dpoly3(s->y, h->u);
+	double dr = spline2_slope(s->r, h->u), dy = spline2_slope(s->y, h->u);
 	double R = sqrt(p.x * p.x + p.z * p.z);
 	vec3 n = R > 0 ? v3(dy * p.x / R, -dr, dy * p.z / R) : v3(0, dr > 0 ? -1 : 1, 0);
 	if (n.x == 0 && n.y == 0 && n.z == 0)

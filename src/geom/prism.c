@@ -28,6 +28,7 @@
  * turns every normal to face the ray, so only trace() sees the sign. */
 #include "geom/shapes.h"
 #include "geom/solve.h"
+#include "geom/spline2.h"
 #include "geom/collect.h"
 
 #include <math.h>
@@ -56,85 +57,17 @@ struct prism {
 	double lo[2], hi[2]; /* the cross-section's extent (at y = 1 for conic) */
 };
 
-/* The value of a cubic's coefficients c at u. */
-static double poly3(const double c[4], double u)
-{
-	return ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
-}
-
-static double dpoly3(const double c[4], double u)
-{
-	return (3 * c[3] * u + 2 * c[2]) * u + c[1];
-}
-
-/* The extent of c(u) for u in [0, 1]: the ends and where the derivative
- * vanishes. */
-static void extent(const double c[4], double *lo, double *hi)
-{
-	double a = poly3(c, 0), b = poly3(c, 1);
-	*lo = fmin(a, b);
-	*hi = fmax(a, b);
-	double r[2];
-	int n = solve_quadratic(3 * c[3], 2 * c[2], c[1], r);
-	for (int i = 0; i < n; i++)
-		if (r[i] > 0 && r[i] < 1) {
-			double v = poly3(c, r[i]);
-			*lo = fmin(*lo, v);
-			*hi = fmax(*hi, v);
-		}
-}
+_Static_assert((int)PRISM_BEZIER_SPLINE == (int)SPLINE2_BEZIER && (int)PRISM_CUBIC_SPLINE == (int)SPLINE2_CUBIC &&
+                   (int)PRISM_QUADRATIC_SPLINE == (int)SPLINE2_QUADRATIC,
+               "prism's splines are spline2's");
 
 /* The piece of the given spline from its control points p (2, 3 or 4
- * points as the spline needs; see the file comment). */
+ * points as the spline needs; see spline2.h). */
 static struct pseg make_seg(enum prism_spline kind, const double (*p)[2])
 {
 	struct pseg s;
 	memset(&s, 0, sizeof s);
-	for (int k = 0; k < 2; k++) {
-		double *c = k == 0 ? s.x : s.z;
-		switch (kind) {
-		case PRISM_LINEAR_SPLINE:
-			c[0] = p[0][k];
-			c[1] = p[1][k] - p[0][k];
-			s.deg = 1;
-			break;
-		case PRISM_QUADRATIC_SPLINE:
-			c[0] = p[1][k];
-			c[1] = (p[2][k] - p[0][k]) / 2;
-			c[2] = (p[2][k] + p[0][k]) / 2 - p[1][k];
-			s.deg = 2;
-			break;
-		case PRISM_CUBIC_SPLINE: {
-			double m1 = (p[2][k] - p[0][k]) / 2, m2 = (p[3][k] - p[1][k]) / 2;
-			c[0] = p[1][k];
-			c[1] = m1;
-			c[2] = 3 * (p[2][k] - p[1][k]) - 2 * m1 - m2;
-			c[3] = 2 * (p[1][k] - p[2][k]) + m1 + m2;
-			s.deg = 3;
-			break;
-		}
-		case PRISM_BEZIER_SPLINE:
-			c[0] = p[0][k];
-			c[1] = 3 * (p[1][k] - p[0][k]);
-			c[2] = 3 * (p[0][k] - 2 * p[1][k] + p[2][k]);
-			c[3] = p[3][k] - p[0][k] + 3 * (p[1][k] - p[2][k]);
-			s.deg = 3;
-			break;
-		}
-	}
-	if (kind == PRISM_BEZIER_SPLINE) {
-		/* POV-Ray bounds a Bezier piece by its control points. */
-		for (int k = 0; k < 2; k++) {
-			s.lo[k] = s.hi[k] = p[0][k];
-			for (int i = 1; i < 4; i++) {
-				s.lo[k] = fmin(s.lo[k], p[i][k]);
-				s.hi[k] = fmax(s.hi[k], p[i][k]);
-			}
-		}
-	} else {
-		extent(s.x, &s.lo[0], &s.hi[0]);
-		extent(s.z, &s.lo[1], &s.hi[1]);
-	}
+	s.deg = spline2_piece((enum spline2_kind)kind, p, s.x, s.z, s.lo, s.hi);
 	return s;
 }
 
@@ -273,9 +206,9 @@ static bool inside_2d(const struct prism *P, double x, double z)
 		int nr = solve_poly(c, s->deg, -eps, 1 + eps, false, r);
 		for (int k = 0; k < nr; k++) {
 			double u = fmin(fmax(r[k], 0), 1);
-			if (!(poly3(s->x, u) > x))
+			if (!(spline2_at(s->x, u) > x))
 				continue;
-			double dz = dpoly3(s->z, u);
+			double dz = spline2_slope(s->z, u);
 			if ((dz > 0 && r[k] < 1 - eps) || (dz < 0 && r[k] > eps))
 				count++;
 		}
@@ -361,7 +294,7 @@ static void prism_hits(const struct prism *P, const struct ray *r, double tmin, 
 		int nr = solve_poly(q, s->deg, -1e-9, 1 + 1e-9, P->sturm, roots);
 		for (int k = 0; k < nr; k++) {
 			double u = fmin(fmax(roots[k], 0), 1);
-			double X = poly3(s->x, u), Z = poly3(s->z, u);
+			double X = spline2_at(s->x, u), Z = spline2_at(s->z, u);
 			double t;
 			if (P->conic) {
 				double ex = d.x - d.y * X, ez = d.z - d.y * Z;
@@ -419,8 +352,8 @@ static vec3 prism_normal(const struct object *o, vec3 p, const struct hit *h)
 		return v3(0, 1, 0);
 	const struct pseg *s = &P->seg[h->part];
 	double u = h->u;
-	double X = poly3(s->x, u), Z = poly3(s->z, u);
-	double dx = dpoly3(s->x, u), dz = dpoly3(s->z, u);
+	double X = spline2_at(s->x, u), Z = spline2_at(s->z, u);
+	double dx = spline2_slope(s->x, u), dz = spline2_slope(s->z, u);
 	vec3 n = v3(dz, P->conic ? Z * dx - X * dz : 0, -dx);
 	if (P->bezier)
 		n = v3_neg(n);

@@ -14,6 +14,7 @@
  * cylinder of the largest radius the pieces reach. */
 #include "geom/shapes2.h"
 #include "geom/solve.h"
+#include "geom/collect.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -82,7 +83,8 @@ static bool solve4(double m[4][4], double b[4], double x[4])
 	return true;
 }
 
-typedef bool (*hit_sink)(void *ctx, double t, int part);
+/* The crossings go to a collector of geom/collect.h (u unused: 0). */
+typedef bool (*hit_sink)(void *ctx, double t, int part, double u);
 
 static void sor_hits(const struct sor *S, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx)
 {
@@ -105,7 +107,7 @@ static void sor_hits(const struct sor *S, const struct ray *r, double tmin, doub
 				continue;
 			double x = o.x + t * d.x, z = o.z + t * d.z;
 			if (x * x + z * z <= (c == 0 ? S->r2lo : S->r2hi))
-				if (!take(ctx, t, c == 0 ? PART_BOTTOM : PART_TOP))
+				if (!take(ctx, t, c == 0 ? PART_BOTTOM : PART_TOP, 0))
 					return;
 		}
 	}
@@ -139,33 +141,16 @@ static void sor_hits(const struct sor *S, const struct ray *r, double tmin, doub
 			double y = o.y + t * d.y;
 			if (y < s->h0 || y > s->h1)
 				continue;
-			if (!take(ctx, t, i))
+			if (!take(ctx, t, i, 0))
 				return;
 		}
 	}
 }
 
-struct closest {
-	double t;
-	int part;
-	bool found;
-};
-
-static bool take_closest(void *ctx, double t, int part)
-{
-	struct closest *c = ctx;
-	if (!c->found || t < c->t) {
-		c->t = t;
-		c->part = part;
-		c->found = true;
-	}
-	return true;
-}
-
 static bool sor_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
 {
-	struct closest c = {.found = false};
-	sor_hits((const struct sor *)o, r, tmin, tmax, take_closest, &c);
+	struct hit_closest c = {.found = false};
+	sor_hits((const struct sor *)o, r, tmin, tmax, hit_take_closest, &c);
 	if (!c.found)
 		return false;
 	h->t = c.t;
@@ -173,33 +158,11 @@ static bool sor_intersect(const struct object *o, const struct ray *r, double tm
 	return true;
 }
 
-struct all {
-	const struct object *o;
-	struct hit *out;
-	int n, max;
-};
-
-static bool take_all(void *ctx, double t, int part)
-{
-	struct all *a = ctx;
-	if (a->max <= 0)
-		return false;
-	if (a->n == a->max && t >= a->out[a->n - 1].t)
-		return true;
-	int i = a->n < a->max ? a->n++ : a->n - 1;
-	while (i > 0 && a->out[i - 1].t > t) {
-		a->out[i] = a->out[i - 1];
-		i--;
-	}
-	a->out[i] = (struct hit){.t = t, .obj = a->o, .part = part};
-	return true;
-}
-
 static int sor_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out,
                         int max)
 {
-	struct all a = {.o = o, .out = out, .max = max};
-	sor_hits((const struct sor *)o, r, tmin, tmax, take_all, &a);
+	struct hit_all a = {.o = o, .out = out, .max = max};
+	sor_hits((const struct sor *)o, r, tmin, tmax, hit_take_all, &a);
 	return a.n;
 }
 
