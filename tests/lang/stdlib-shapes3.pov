@@ -1,9 +1,8 @@
 // stdlib-shapes3.pov: the macros of shapes3.inc through the points where
 // rays from 29 directions aimed at a chosen point meet them, inside() at
 // that point, and (where lucent builds the shape from the same kind of
-// pieces, so that the bounding boxes agree) their extents. Left out:
-// Ring_Sphere (POV-Ray's vertical rings are not all full circles; lucent
-// draws full tori) and the extents of the other shapes, whose bounding
+// pieces, so that the bounding boxes agree) their extents. Left out: the
+// extents of the other shapes, whose bounding
 // boxes in POV-Ray come from how its macros build them (rotated boxes),
 // not from the shapes (doc/stdlib.md). Egg_Shape, Egg and the two
 // Half_Hollowed_Rounded_Cylinders are left out too: lucent bounds their
@@ -66,6 +65,10 @@ Probe("Facetted_Egg_Shape", object { Facetted_Egg_Shape(3, 8, 1.2, 1.6) }, 0, 5,
 Probe("Facetted_Egg", object { Facetted_Egg(4, 10) }, <0, 1, 0>, 5, 0)
 Probe("Egg_Shape", object { Egg_Shape(1.2, 1.6) }, <0, 1, 0>, 5, 0)
 Probe("Egg", object { Egg }, <0, 1, 0>, 5, 0)
+Probe("Ring_Sphere", object { Ring_Sphere(2, 2, 0.2, 0.15, 5, 6) }, 0, 5, 1)
+Probe("Ring_Sphere thin", object { Ring_Sphere(1.5, 2, 0.1, 0.25, 3, 4) }, 0, 5, 1)
+Probe("Ring_Sphere odd", object { Ring_Sphere(2, 1.8, 0.3, 0.1, 4, 5) }, <0,1.2,0>, 5, 1)
+Probe("Ring_Sphere bare", object { Ring_Sphere(1, 3, 0.05, 0.4, 0, 1) }, 0, 5, 1)
 Probe("Round_Pyramid_N_out", object { Round_Pyramid_N_out(6, <0,0,0>, 1, <0,2,0>, 0.5, 0.1, 1, 0) }, <0,1,0>, 5, 0)
 Probe("Round_Pyramid_N_out hollow", object { Round_Pyramid_N_out(5, <0,0,0>, 1, <0.5,2,0>, 0.5, 0.1, 0, 0) }, <0,1,0>, 5, 0)
 Probe("Round_Pyramid_N_in", object { Round_Pyramid_N_in(6, <0,0,0>, 1, <0,2,0>, 0.5, 0.1, 1, 0) }, <0,1,0>, 5, 0)
