@@ -1,0 +1,34 @@
+// stdlib-shapes3-extents.pov: min_extent and max_extent of shapes3.inc's
+// macros over a range of their parameters. POV-Ray's bounding boxes show
+// how its macros build the shapes (which pieces are turned, what cuts
+// them), so lucent's shapes3.inc builds them the same way: the expected
+// text is POV-Ray's with its own shapes3.inc. Angles are chosen so that no
+// figure lies on a rounding edge of the 4th decimal (POV-Ray keeps boxes
+// in single precision).
+#version 3.7;
+#include "shapes3.inc"
+// Rnd(V): V rounded to 4 decimals.
+#macro Rnd(V) (<floor(V.x * 1e4 + 0.5), floor(V.y * 1e4 + 0.5), floor(V.z * 1e4 + 0.5)> / 1e4) #end
+#macro E(Name, Obj)
+	#debug concat(Name, ": ", vstr(3, Rnd(min_extent(Obj)), ",", 0, 4), " / ", vstr(3, Rnd(max_extent(Obj)), ",", 0, 4), "\n")
+#end
+#declare Angles = array[22] { -1000, -550, -400, -360, -290, -220, -180, -135, -100, -45, 0,
+	20, 45, 100, 135, 180, 210, 300, 360, 400, 550, 720 }
+#for (I, 0, 21)
+	#declare A = Angles[I];
+	E(concat("Segment_of_Torus ", str(A, 0, 0)), Segment_of_Torus(2, 0.5, A))
+	E(concat("Segment_of_CylinderRing ", str(A, 0, 0)), Segment_of_CylinderRing(2, 1.5, 1, A))
+	E(concat("Segment_of_Object ", str(A, 0, 0)), Segment_of_Object(box { <-1, -1, -2>, <1.5, 1, 0.8> }, A))
+#end
+E("Segment_of_Torus thick", Segment_of_Torus(1, 2, 45))
+E("Segment_of_CylinderRing R_in > R_out", Segment_of_CylinderRing(1, 1.5, 1, 45))
+E("Segment_of_CylinderRing Height < 0", Segment_of_CylinderRing(2, 1.5, -1, 45))
+E("Segment_of_Object sphere", Segment_of_Object(sphere { <0.5, 0, 0>, 1 }, 200))
+E("Segment_of_Object tall", Segment_of_Object(box { <-1, -5, -1>, <1, 7, 4> }, 200))
+E("Round_Conic_Torus", Round_Conic_Torus(1, 0.5, 1, 0.2, 0))
+E("Round_Conic_Torus equal", Round_Conic_Torus(1, 1, 1, 0.2, 0))
+E("Round_Conic_Torus upper larger", Round_Conic_Torus(2, 1, 0.5, 0.2, 1))
+E("Round_Conic_Torus far", Round_Conic_Torus(5, 0.3, 1, 0.1, 0))
+E("Round_Conic_Prism", Round_Conic_Prism(1, 0.5, 1, 2, 0.2, 1))
+E("Round_Conic_Prism upper larger", Round_Conic_Prism(2, 1, 0.5, 3, 0.2, 0))
+E("Round_Conic_Prism far", Round_Conic_Prism(5, 0.3, 1, 1, 0.1, 0))
