@@ -5,8 +5,11 @@
 # which declares its map: POV-Ray's scenes include it, then say
 # color_map { M_Name }) a scene "#version 3.7; #include NAME" must render
 # with exit status 0 and print nothing on stderr; then one scene including
-# every file. Last, the deprecated textures of glass_old.inc warn on use,
-# once each, as POV-Ray's do.
+# every file. Then the deprecated textures of glass_old.inc warn on use,
+# once each, as POV-Ray's do. Last, meshmaker.inc's mesh files: lucent
+# runs tests/stdlib-meshmaker/write.pov twice in an empty folder, and the
+# files and #debug streams must be byte for byte what POV-Ray 3.7 wrote
+# (tests/stdlib-meshmaker/expected, made by its record.sh).
 . "${top_srcdir:-.}/tests/lib.sh"
 lib="$top_srcdir/stdlib"
 cd "$WORK" || exit 1
@@ -59,5 +62,26 @@ if [ $rc -eq 0 ] && cmp -s got.txt want.txt; then
 else
 	fail "glass_old.inc warnings: exit status $rc"
 	diff want.txt got.txt | sed 's/^/    | /' | head -n 10
+fi
+
+mm="$top_srcdir/tests/stdlib-meshmaker"
+mkdir "$WORK/mm" && cp "$mm/write.pov" "$WORK/mm/" || exit 1
+ok=1
+for run in 1 2; do
+	(cd "$WORK/mm" && "$LUCENT" -q -F +W8 +H8 +GDrun$run.dbg write.pov < /dev/null > err.txt 2>&1) || ok=0
+done
+for path in "$mm"/expected/*; do
+	f=$(basename "$path")
+	if ! cmp -s "$path" "$WORK/mm/$f"; then
+		ok=0
+		echo "    | $f differs from POV-Ray's"
+		diff "$path" "$WORK/mm/$f" 2>&1 | sed 's/^/    | /' | head -n 6
+	fi
+done
+if [ $ok -eq 1 ]; then
+	pass "meshmaker.inc writes and reads its files as POV-Ray's"
+else
+	fail "meshmaker.inc files"
+	sed 's/^/    | /' "$WORK/mm/err.txt" | head -n 5
 fi
 finish
