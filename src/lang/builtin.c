@@ -442,21 +442,22 @@ struct value builtin_call(struct parser *p)
 	case KW_VROTATE: {
 		vec3 a = arg_vec3(p, name);
 		comma(p);
-		struct xform x = xform_rotate(arg_vec3(p, name));
+		struct xform x = xform_rotate_plain(arg_vec3(p, name));
 		r = vec3_value(mat_point(&x.fwd, a), at);
 		break;
 	}
 	case KW_VAXIS_ROTATE: {
 		vec3 a = arg_vec3(p, name);
 		comma(p);
-		vec3 axis = v3_norm(arg_vec3(p, name));
+		vec3 axis = arg_vec3(p, name);
+		if (v3_len(axis) == 0)
+			parse_error_at(p, at, "vaxis_rotate() about a zero-length axis");
+		/* Scaled by the reciprocal of its length, as POV-Ray does: the
+		 * last bits of the result depend on it. */
+		axis = v3_scale(axis, 1.0 / v3_len(axis));
 		comma(p);
-		double ang = arg_float(p, name) * M_PI / 180.0;
-		/* Rodrigues' rotation, turning the same way as rotate does. */
-		double c = cos(ang), s = sin(ang);
-		vec3 out = v3_add(v3_add(v3_scale(a, c), v3_scale(v3_cross(axis, a), s)),
-		                  v3_scale(axis, v3_dot(axis, a) * (1 - c)));
-		r = vec3_value(out, at);
+		mat4 rot = mat_axis_rotation(axis, arg_float(p, name));
+		r = vec3_value(mat_point(&rot, a), at);
 		break;
 	}
 	case KW_MIN_EXTENT: case KW_MAX_EXTENT: {

@@ -127,13 +127,13 @@ struct xform xform_scale(vec3 s)
 /* One rotation about a principal axis, with sines of exact multiples of
  * 90 degrees snapped to exact values so that rotate y*90 maps x to -z
  * exactly. */
-static mat4 axis_rotation(int axis, double degrees)
+static mat4 axis_rotation(int axis, double degrees, int snap)
 {
 	mat4 r = mat_identity();
 	double a = degrees * (M_PI / 180.0);
 	double s = sin(a), c = cos(a);
 	double q = degrees / 90.0;
-	if (q == floor(q)) {
+	if (snap && q == floor(q)) {
 		long k = ((long)fmod(q, 4.0) + 4) % 4;
 		static const double sn[4] = {0, 1, 0, -1}, cs[4] = {1, 0, -1, 0};
 		s = sn[k];
@@ -147,15 +147,43 @@ static mat4 axis_rotation(int axis, double degrees)
 	return r;
 }
 
-struct xform xform_rotate(vec3 deg)
+static struct xform rotation(vec3 deg, int snap)
 {
-	mat4 rx = axis_rotation(0, deg.x), ry = axis_rotation(1, deg.y), rz = axis_rotation(2, deg.z);
+	mat4 rx = axis_rotation(0, deg.x, snap), ry = axis_rotation(1, deg.y, snap),
+	     rz = axis_rotation(2, deg.z, snap);
 	mat4 yx = mat_mul(&ry, &rx);
 	struct xform t;
 	t.fwd = mat_mul(&rz, &yx);
 	/* A rotation's inverse is its transpose. */
 	t.inv = mat_transpose(&t.fwd);
 	return t;
+}
+
+struct xform xform_rotate(vec3 deg)
+{
+	return rotation(deg, 1);
+}
+
+struct xform xform_rotate_plain(vec3 deg)
+{
+	return rotation(deg, 0);
+}
+
+mat4 mat_axis_rotation(vec3 axis, double degrees)
+{
+	double a = degrees * (M_PI / 180.0);
+	double c = cos(a), s = sin(a), t = 1.0 - c;
+	mat4 r = mat_identity();
+	r.m[0][0] = t * (axis.x * axis.x) + c;
+	r.m[0][1] = t * (axis.x * axis.y) - s * axis.z;
+	r.m[0][2] = t * (axis.x * axis.z) + s * axis.y;
+	r.m[1][0] = t * (axis.x * axis.y) + s * axis.z;
+	r.m[1][1] = t * (axis.y * axis.y) + c;
+	r.m[1][2] = t * (axis.y * axis.z) - s * axis.x;
+	r.m[2][0] = t * (axis.x * axis.z) - s * axis.y;
+	r.m[2][1] = t * (axis.y * axis.z) + s * axis.x;
+	r.m[2][2] = t * (axis.z * axis.z) + c;
+	return r;
 }
 
 struct xform xform_matrix(const double v[12])

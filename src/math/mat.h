@@ -38,6 +38,13 @@ struct xform xform_translate(vec3 t);
  * a singular scale gives a non-invertible transform (inv = identity). */
 struct xform xform_scale(vec3 s);
 struct xform xform_rotate(vec3 degrees);
+/* The same rotation with sines and cosines as computed, not snapped at
+ * multiples of 90 degrees: the last bits POV-Ray's vrotate() prints. */
+struct xform xform_rotate_plain(vec3 degrees);
+/* Rotation by DEGREES about the unit vector AXIS (right-handed about AXIS
+ * in lucent's column convention, as vaxis_rotate() turns), its elements
+ * rounded as POV-Ray's axis rotation matrix. */
+mat4 mat_axis_rotation(vec3 axis, double degrees);
 /* A 4x3 matrix as POV-Ray's `matrix <a..l>`: rows are x, y, z images and
  * the translation. */
 struct xform xform_matrix(const double v[12]);
