@@ -20,6 +20,7 @@
 #include "pattern/pattern.h"
 #include "pattern/noise_table.h"
 
+#include <limits.h>
 #include <math.h>
 
 #define NOISE_OFFSET 10000      /* ≡ 1808 (mod 4096), what POV-Ray adds */
@@ -44,8 +45,7 @@ static inline int hash3(int x, int y, int z)
 }
 
 /* The lattice cell of p: integer corner (offset for hashing), fraction,
- * and the blend weights. Coordinates beyond ±2^30 wrap into range rather
- * than overflow. */
+ * and the blend weights. */
 struct cell {
 	int ix, iy, iz;
 	double fx, fy, fz;
@@ -54,10 +54,16 @@ struct cell {
 
 static inline int lattice(double v, double *frac)
 {
+	/* Beyond the range of a 32-bit int POV-Ray's corner becomes INT_MIN
+	 * (what x86 makes of an int conversion out of range) and the fraction
+	 * v - INT_MIN, far outside [0, 1], so that the noise saturates at 0 or 1
+	 * (measured: bozo at 96 points out to 1e11 and at +-2^31 + d, all equal
+	 * to POV-Ray's; the fog of a ray that misses everything shows it). The
+	 * offset then wraps as a 32-bit int would. */
 	double f = floor(v);
-	*frac = v - f;
-	f = fmod(f, 1073741824.0);
-	return (int)f + NOISE_OFFSET;
+	int i = f >= -2147483648.0 && f < 2147483648.0 ? (int)f : INT_MIN;
+	*frac = v - (double)i;
+	return (int)((unsigned)i + NOISE_OFFSET);
 }
 
 static inline void cell_of(vec3 p, struct cell *c)

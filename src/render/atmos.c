@@ -11,52 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct atmos_ready {
-	struct bvh *solid;                /* bounded objects that are not hollow */
-	const struct object **unbounded;  /* unbounded ones that are not hollow */
-	size_t nunbounded;
-};
-
-struct atmos_ready *atmos_prepare(struct object *const *bounded, size_t nbounded, struct object *const *unbounded,
-                                  size_t nunbounded)
-{
-	struct atmos_ready *a = calloc(1, sizeof *a);
-	struct object **v = malloc((nbounded + nunbounded + 1) * sizeof *v);
-	if (!a || !v) abort();
-	size_t n = 0;
-	for (size_t i = 0; i < nbounded; i++)
-		if (!(bounded[i]->flags & OBJ_HOLLOW))
-			v[n++] = bounded[i];
-	a->solid = bvh_build(v, n);
-	n = 0;
-	for (size_t i = 0; i < nunbounded; i++)
-		if (!(unbounded[i]->flags & OBJ_HOLLOW))
-			v[n++] = unbounded[i];
-	a->unbounded = (const struct object **)v;
-	a->nunbounded = n;
-	return a;
-}
-
-void atmos_ready_free(struct atmos_ready *a)
-{
-	if (!a)
-		return;
-	bvh_free(a->solid);
-	free((void *)a->unbounded);
-	free(a);
-}
-
-/* Is q inside some object that is not hollow? */
-static bool in_solid(const struct atmos_ready *a, vec3 q)
-{
-	if (bvh_inside_any(a->solid, q, NULL))
-		return true;
-	for (size_t i = 0; i < a->nunbounded; i++)
-		if (object_inside(a->unbounded[i], q))
-			return true;
-	return false;
-}
-
 /* POV-Ray's grey of a colour, the share of a filter that passes transmit. */
 static double gray(struct rgbft c)
 {
@@ -224,16 +178,12 @@ static double fog_attenuation(const struct fog *f, vec3 org, vec3 dir, double de
 	return exp(-width * (1 - w * exp(-depth / f->distance)) / f->distance);
 }
 
-struct rgbft atmos_apply(const struct prepared *p, vec3 org, vec3 dir, double depth, struct rgbft c)
+struct rgbft atmos_apply(const struct prepared *p, const struct medium *med, vec3 org, vec3 dir, double depth,
+                         struct rgbft c)
 {
 	const struct scene *sc = p->scene;
 	const struct atmosphere *a = &sc->atmos;
-	/* No surface lies between the ends of the segment, so one point tells
-	 * whether all of it is inside a solid object. */
-	double mid = depth / 2;
-	if (depth >= ATMOS_MISS_DEPTH)
-		mid = 1 + 2 * v3_maxabs(org);
-	if (p->atmos && in_solid(p->atmos, v3_madd(org, dir, mid)))
+	if (med && med->solid)
 		return c;
 	if (p->features & FEAT_RAINBOW)
 		for (size_t i = 0; i < a->nrainbows; i++)

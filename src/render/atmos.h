@@ -11,17 +11,6 @@
  * background through). */
 #define ATMOS_MISS_DEPTH 2e10
 
-/* What fog and rainbows need that is decided once: the objects that are
- * not hollow, for POV-Ray's rule that no fog lies inside them. */
-struct atmos_ready;
-
-/* Build it from the prepared scene's top-level objects (bounded ones with
- * finite world bounds, and the unbounded ones); the arrays are copied.
- * The caller owns the result (atmos_ready_free). */
-struct atmos_ready *atmos_prepare(struct object *const *bounded, size_t nbounded, struct object *const *unbounded,
-                                  size_t nunbounded);
-void atmos_ready_free(struct atmos_ready *a);
-
 /* The colour seen along unit direction dir where a ray leaves the scene:
  * the sky_sphere's layers (FEAT_SKY) over the background. The rgb is what
  * shows over black (a transparent background adds its colour times
@@ -31,9 +20,11 @@ struct rgbft atmos_escape(const struct prepared *p, vec3 dir);
 
 /* Rainbows, then fogs, over the segment of the ray from org along unit
  * direction dir of length depth (ATMOS_MISS_DEPTH for a ray that left the
- * scene), applied to the colour c found at its end. Segments inside a
- * solid (not hollow) object get none, as in POV-Ray. Call only when the
+ * scene), applied to the colour c found at its end. med is the interiors
+ * the ray travels in (NULL: none): as in POV-Ray, a segment inside some
+ * object that is not hollow (med->solid) gets none. Call only when the
  * scene has FEAT_FOG or FEAT_RAINBOW. */
-struct rgbft atmos_apply(const struct prepared *p, vec3 org, vec3 dir, double depth, struct rgbft c);
+struct rgbft atmos_apply(const struct prepared *p, const struct medium *med, vec3 org, vec3 dir, double depth,
+                         struct rgbft c);
 
 #endif

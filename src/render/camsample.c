@@ -275,9 +275,11 @@ static double lens_dim(uint32_t i, uint32_t base, double shift)
  *    each sample), with no projection onto the plane across d;
  *  - average and normal_map blend the entries' perturbed directions (POV-Ray
  *    3.7 crashes on a normal_map in the camera; average matches it).
- * Known differences: a slope_map's heights differ (up to 0.03 in the
- * ray's slope), wood with classic turbulence differs (marble with it
- * matches), and so does facets, which looks at the surface it is on. */
+ * A slope_map's heights are POV-Ray's (texture_eval.c), and so is wood with
+ * its turbulence (measured to 1e-4 in the ray's slope, but on the
+ * pattern's discontinuities). Known differences: facets, which looks at
+ * the surface it is on, and spiral1 with turbulence, whose values differ
+ * on surfaces too (src/pattern). */
 #define CAMERA_BUMP (2.0 / 15.0)
 
 /* The tetrahedron of the numerical slope (as on surfaces: texture_eval.c). */

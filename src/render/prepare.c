@@ -3,7 +3,6 @@
 
 #include "geom/csg.h"
 #include "image/image.h"
-#include "render/atmos.h"
 #include "render/camsample.h"
 
 #include <stdlib.h>
@@ -33,6 +32,7 @@ const char *feature_name(enum feature f)
 	case FEAT_SKY: return "sky";
 	case FEAT_RAINBOW: return "rainbow";
 	case FEAT_ANTIALIAS: return "antialiasing";
+	case FEAT_INTERIORS: return "fog inside objects";
 	default: return "?";
 	}
 }
@@ -191,6 +191,11 @@ unsigned prepare_features(const struct scene *s)
 			f |= FEAT_RAINBOW;
 	if (s->atmos.sky)
 		f |= FEAT_SKY;
+	/* Fog stops inside objects that are not hollow; a ray can only get
+	 * into one through a see-through surface (or start there: the camera,
+	 * see prepare_scene). */
+	if ((f & (FEAT_FOG | FEAT_RAINBOW)) && (f & FEAT_TRANSPARENCY))
+		f |= FEAT_INTERIORS;
 	/* cameras: focal blur needs an aperture and blur_samples. */
 	if (s->camera.aperture > 0 && s->camera.blur_samples_max > 0)
 		f |= FEAT_FOCAL_BLUR;
@@ -266,17 +271,64 @@ static void fill_interior(struct object *o, struct interior *in)
 	}
 }
 
-/* The interior of the first leaf of o that contains pt (o itself does). */
-static const struct interior *interior_at(struct object *o, vec3 pt)
+/* The leaves of o in scene order, for same_hollow. */
+static void collect_leaves(struct object *o, struct objlist *l)
+{
+	struct object **kids;
+	if (!o->ops->children) {
+		objlist_push(l, o);
+		return;
+	}
+	size_t n = o->ops->children(o, &kids);
+	for (size_t i = 0; i < n; i++)
+		collect_leaves(kids[i], l);
+}
+
+/* Leaves ordered by interior, then by their place in the object. */
+static int by_interior(const void *a, const void *b)
+{
+	const struct object *const *x = a, *const *y = b;
+	uintptr_t ix = (uintptr_t)(*x)->interior, iy = (uintptr_t)(*y)->interior;
+	if (ix != iy)
+		return ix < iy ? -1 : 1;
+	return (*x)->id < (*y)->id ? -1 : (*x)->id > (*y)->id;
+}
+
+/* Within one object, the leaves that share an interior are all hollow or
+ * all solid, as the last of them says (measured in POV-Ray 3.7: in
+ * union { sphere { A hollow } sphere { B } } fog stops inside both spheres,
+ * and with the hollow one last it shows in both, even under the union's
+ * `hollow off`; a leaf with an interior of its own keeps its own flag).
+ * Needs the leaves numbered (number_leaves) and their interiors filled. */
+static void same_hollow(struct object *o)
+{
+	if (!o->ops->children)
+		return;
+	struct objlist l = {0};
+	collect_leaves(o, &l);
+	qsort(l.v, l.n, sizeof *l.v, by_interior);
+	for (size_t i = 0; i < l.n;) {
+		size_t j = i;
+		while (j + 1 < l.n && l.v[j + 1]->interior == l.v[i]->interior)
+			j++;
+		unsigned hollow = l.v[j]->flags & OBJ_HOLLOW;
+		for (; i <= j; i++)
+			l.v[i]->flags = (l.v[i]->flags & ~(unsigned)OBJ_HOLLOW) | hollow;
+	}
+	free(l.v);
+}
+
+/* The first leaf of o that contains pt (o itself does), for its interior. */
+static const struct object *leaf_at(const struct object *o, vec3 pt)
 {
 	struct object **kids;
 	if (!o->ops->children)
-		return o->interior;
-	size_t n = o->ops->children(o, &kids);
+		return o;
+	size_t n = o->ops->children((struct object *)o, &kids);
 	for (size_t i = 0; i < n; i++)
 		if (object_inside(kids[i], pt))
-			return interior_at(kids[i], pt);
-	return n ? interior_at(kids[0], pt) : NULL;
+			return leaf_at(kids[i], pt);
+	return n ? leaf_at(kids[0], pt) : NULL;
 }
 
 struct prepared *prepare_scene(struct scene *s)
@@ -294,8 +346,6 @@ struct prepared *prepare_scene(struct scene *s)
 	}
 	texture_unref(plain);
 	p->bvh = bvh_build(bounded.v, bounded.n);
-	if (s->atmos.nfogs || s->atmos.nrainbows)
-		p->atmos = atmos_prepare(bounded.v, bounded.n, unbounded.v, unbounded.n);
 	free(bounded.v);
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
@@ -306,18 +356,24 @@ struct prepared *prepare_scene(struct scene *s)
 	for (size_t i = 0; i < s->nlights; i++)
 		if (s->lights[i].projected_through)
 			object_prepare(s->lights[i].projected_through);
-	if (p->features & FEAT_MEDIA) {
+	if (p->features & (FEAT_MEDIA | FEAT_FOG | FEAT_RAINBOW)) {
 		/* Interiors are told apart by pointer; the camera starts inside
 		 * those of the objects around it (as in POV-Ray, where a camera
-		 * inside glass sees through it from within). */
+		 * inside glass sees through it from within, and a camera inside
+		 * an object that is not hollow sees no fog until its rays leave). */
 		for (size_t i = 0; i < s->nobjects; i++) {
 			struct interior *in = interior_new();
 			fill_interior(s->objects[i], in);
 			interior_unref(in);
-			if (object_inside(s->objects[i], s->camera.location) && p->camera_medium.n < MEDIUM_MAX) {
-				const struct interior *ci = interior_at(s->objects[i], s->camera.location);
-				if (ci)
-					p->camera_medium.in[p->camera_medium.n++] = ci;
+			same_hollow(s->objects[i]);
+			struct medium *cm = &p->camera_medium;
+			if (object_inside(s->objects[i], s->camera.location) && cm->n < MEDIUM_MAX) {
+				const struct object *leaf = leaf_at(s->objects[i], s->camera.location);
+				if (leaf && leaf->interior) {
+					if (!(leaf->flags & OBJ_HOLLOW))
+						cm->solid |= UINT32_C(1) << cm->n;
+					cm->in[cm->n++] = leaf->interior;
+				}
 			}
 		}
 	}
@@ -334,7 +390,7 @@ void prepare_quality(struct prepared *p, int q)
 	/* Below 6 light still filters through transparent objects on its way
 	 * to a surface (POV-Ray's shadows do), but no ray is transmitted. */
 	if (q < 6)
-		p->features &= ~(unsigned)(FEAT_REFRACTION | FEAT_DISPERSION);
+		p->features &= ~(unsigned)(FEAT_REFRACTION | FEAT_DISPERSION | FEAT_INTERIORS);
 	if (q < 5)
 		p->features &= ~(unsigned)FEAT_AREA_LIGHTS;
 	if (q < 4)
@@ -347,7 +403,6 @@ void prepared_free(struct prepared *p)
 {
 	if (!p) return;
 	bvh_free(p->bvh);
-	atmos_ready_free(p->atmos);
 	lens_free(p->lens);
 	free((void *)p->unbounded);
 	free(p);

@@ -9,7 +9,8 @@
 #include "accel/bvh.h"
 #include "scene/scene.h"
 
-struct atmos_ready;
+#include <stdint.h>
+
 struct lens;
 
 enum feature {
@@ -35,12 +36,14 @@ enum feature {
 	FEAT_SKY = 1 << 19,         /* sky_sphere */
 	FEAT_RAINBOW = 1 << 20,     /* rainbow */
 	FEAT_ANTIALIAS = 1 << 21,   /* +A: more than one sample per pixel where needed */
-	FEAT__COUNT = 22
+	FEAT_INTERIORS = 1 << 22,   /* fog or a rainbow seen through see-through objects: rays track the
+	                             * interiors they are in, for no fog inside solid objects */
+	FEAT__COUNT = 23
 };
 
-/* Rays track the media they are in (refraction, fading, Fresnel) only
- * when the scene has one of these. */
-#define FEAT_MEDIA (FEAT_REFRACTION | FEAT_FADE | FEAT_FRESNEL | FEAT_DISPERSION)
+/* Rays track the media they are in (refraction, fading, Fresnel, fog
+ * inside objects) only when the scene has one of these. */
+#define FEAT_MEDIA (FEAT_REFRACTION | FEAT_FADE | FEAT_FRESNEL | FEAT_DISPERSION | FEAT_INTERIORS)
 
 /* The interiors a ray is inside, innermost last, and the band of the
  * spectrum it carries. Passed by pointer and copied on change: a ray
@@ -50,6 +53,7 @@ enum { MEDIUM_MAX = 16 };
 struct medium {
 	int n;
 	const struct interior *in[MEDIUM_MAX];
+	uint32_t solid; /* bit i: in[i] is that of an object that is not hollow (no fog or rainbow there) */
 	bool dispersed; /* the ray is one band of a dispersed ray: it disperses no more */
 	double hue;     /* its band's centre, -1/2 (red) to 1/2 (violet); 0 if not dispersed */
 };
@@ -63,8 +67,7 @@ struct prepared {
 	int max_depth;                   /* max_trace_level */
 	bool signature;                  /* --signature: flat colour per primitive */
 	int quality;                     /* +Q, 0 to 11 (9 by default): see prepare_quality */
-	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA) */
-	struct atmos_ready *atmos;       /* fog and rainbows (render/atmos.h); NULL without them */
+	struct medium camera_medium;     /* the interiors around the camera (with FEAT_MEDIA, fog or rainbows) */
 	struct lens *lens;               /* focal blur (render/camsample.h); NULL without it */
 };
 

@@ -183,11 +183,16 @@ static bool medium_has(const struct medium *m, const struct interior *in)
 	return false;
 }
 
-/* The medium after crossing the surface of interior `in`: entered (pushed)
- * or left (removed). */
-static void medium_cross(const struct medium *m, const struct interior *in, struct medium *out)
+/* The medium after crossing the surface of interior `in` of object o:
+ * entered (pushed) or left (removed). Like POV-Ray, the ray only counts
+ * crossings: an interior it meets again is left, whatever the geometry
+ * (behind a clear disc the ray stays "inside" it; in the overlap of two
+ * spheres of one union it is outside their shared interior). */
+static void medium_cross(const struct medium *m, const struct interior *in, const struct object *o,
+                         struct medium *out)
 {
 	out->n = 0;
+	out->solid = 0;
 	out->dispersed = m && m->dispersed;
 	out->hue = m ? m->hue : 0;
 	bool removed = false;
@@ -196,10 +201,15 @@ static void medium_cross(const struct medium *m, const struct interior *in, stru
 			removed = true;
 			continue;
 		}
+		if (m->solid & (UINT32_C(1) << i))
+			out->solid |= UINT32_C(1) << out->n;
 		out->in[out->n++] = m->in[i];
 	}
-	if (!removed && out->n < MEDIUM_MAX)
+	if (!removed && out->n < MEDIUM_MAX) {
+		if (!(o->flags & OBJ_HOLLOW))
+			out->solid |= UINT32_C(1) << out->n;
 		out->in[out->n++] = in;
+	}
 }
 
 /* The colour of pigment pg at s. Below quality 6 a patterned pigment with
@@ -331,7 +341,7 @@ static rgb light_through(struct tracer *tr, size_t slot, rgb lc, vec3 pt, vec3 l
 				if (medium_has(&m, in) && (p->features & FEAT_FADE) && in->fade_distance > 0 && in->fade_power > 0)
 					lc = rgb_mul(lc, shade_fade(in, h.t - last));
 				struct medium next;
-				medium_cross(&m, in, &next);
+				medium_cross(&m, in, h.obj, &next);
 				m = next;
 			}
 		}
@@ -645,7 +655,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 	struct medium after = {0};
 	double n_rel = 1;
 	if (feat & FEAT_MEDIA) {
-		medium_cross(s->med, s->in, &after);
+		medium_cross(s->med, s->in, s->obj, &after);
 		n_rel = fresnel_ior(s);
 	}
 	for (const struct texture *l = t; l && nl < MAX_LAYERS; l = l->next) {
@@ -821,7 +831,7 @@ static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray
 		vec3 dir = v3_norm(r->dir);
 		struct rgbft bg = atmos_escape(p, dir);
 		if (p->features & (FEAT_FOG | FEAT_RAINBOW))
-			bg = atmos_apply(p, r->org, dir, ATMOS_MISS_DEPTH, bg);
+			bg = atmos_apply(p, med, r->org, dir, ATMOS_MISS_DEPTH, bg);
 		*hit_anything = false;
 		tr->transmit = bg.t;
 		return rgb_of(bg);
@@ -852,7 +862,7 @@ static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray
 	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
 		double len = v3_len(r->dir);
 		struct rgbft c = {col.r, col.g, col.b, 0, tr->transmit};
-		c = atmos_apply(p, r->org, v3_scale(r->dir, 1 / len), h.t * len, c);
+		c = atmos_apply(p, med, r->org, v3_scale(r->dir, 1 / len), h.t * len, c);
 		col = rgb_of(c);
 		tr->transmit = c.t;
 	}

@@ -223,7 +223,11 @@ static const vec3 TETRA[4] = {
 };
 
 /* The height a slope_map gives at v: the cubic Hermite curve through the
- * entries' heights with their slopes (per unit of pattern value). */
+ * entries' heights with their slopes. A slope counts per unit of the
+ * interval's own parameter t (0 to 1), not per unit of pattern value
+ * (measured in POV-Ray 3.7 with camera normals, which show the slope
+ * directly: in an interval 0.5 wide the tilt is twice that of slopes per
+ * unit value, and slopes 1 over [0, 0.5] and [0.5, 1] are not a line). */
 static double slope_height(const struct blend_map *m, double v)
 {
 	int lo, hi;
@@ -232,11 +236,10 @@ static double slope_height(const struct blend_map *m, double v)
 	const struct map_entry *a = &m->e[lo], *b = &m->e[hi];
 	if (lo == hi)
 		return a->slope[0];
-	double d = b->value - a->value;
 	double t = w, t2 = t * t, t3 = t2 * t;
 	double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t;
 	double h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-	return h00 * a->slope[0] + h10 * d * a->slope[1] + h01 * b->slope[0] + h11 * d * b->slope[1];
+	return h00 * a->slope[0] + h10 * a->slope[1] + h01 * b->slope[0] + h11 * b->slope[1];
 }
 
 double normal_height(const struct normal *nm, double v)

@@ -80,6 +80,31 @@ static void test_features(void **state)
 	assert_int_equal(f & (FEAT_SHADOWS | FEAT_AREA_LIGHTS), 0);
 }
 
+/* Rays track the interiors they cross (for no fog inside solid objects)
+ * only when there is fog or a rainbow and something see-through. */
+static void test_fog_interiors_feature(void **state)
+{
+	(void)state;
+	const char *clear = "sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.9> } }\n";
+	const char *opaque = "sphere { 0, 1 pigment { rgb 1 } }\n";
+	const char *fog = "fog { distance 3 color rgb 1 }\n";
+	const char *rainbow = "rainbow { angle 42 width 5 distance 1e3 direction z "
+	                      "color_map { [0 rgbt <1,0,0,0.5>] [1 rgbt <0,0,1,0.5>] } }\n";
+	struct {
+		const char *a, *b;
+		bool want;
+	} cases[] = {
+		{clear, fog, true}, {clear, rainbow, true}, {opaque, fog, false}, {clear, "", false},
+	};
+	char buf[512];
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		snprintf(buf, sizeof buf, "#version 3.7;\n%s%s", cases[i].a, cases[i].b);
+		bool got = (features_of(buf) & FEAT_INTERIORS) != 0;
+		if (got != cases[i].want)
+			fail_msg("%s%s: interiors %d, want %d", cases[i].a, cases[i].b, got, cases[i].want);
+	}
+}
+
 /* The light set of a parsed scene, prepared. */
 struct lit_scene {
 	struct parsed r;
@@ -335,6 +360,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_features),
+		cmocka_unit_test(test_fog_interiors_feature),
 		cmocka_unit_test(test_spotlight),
 		cmocka_unit_test(test_cylinder_and_fade),
 		cmocka_unit_test(test_parallel_fade),

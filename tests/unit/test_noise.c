@@ -43,6 +43,28 @@ static void test_noise_generators_1_2(void **state)
 	assert_near(noise3(v3(0.3, 0.7 + 4096, 1.1), 2), 0.6895852173, TOL);
 }
 
+/* Beyond a 32-bit int's range POV-Ray's lattice corner is INT_MIN and the
+ * fraction huge, so the noise saturates at 0 or 1 (the fog of a ray that
+ * misses everything, 1e10 away, shows it). Just inside the range the noise
+ * is as usual. */
+static void test_noise_beyond_int(void **state)
+{
+	(void)state;
+	assert_near(noise3(v3(2147473648.3, 0.2, 0.7), 2), 0.4540588960, TOL);
+	assert_near(noise3(v3(2147483647.3, 0.2, 0.7), 2), 0.5322910495, TOL);
+	assert_near(noise3(v3(2147483647.3, 0.2, 0.7), 1), 0.5342079990, TOL);
+	assert_near(noise3(v3(-2147483647.7, 0.2, 0.7), 2), 0.4610212112, TOL);
+	assert_near(noise3(v3(-2147483647.7, 0.2, 0.7), 1), 0.3887165393, TOL);
+	assert_near(noise3(v3(2147483648.3, 0.2, 0.7), 2), 0, TOL);
+	assert_near(noise3(v3(-2147483648.7, 0.2, 0.7), 1), 0, TOL);
+	assert_near(noise3(v3(2.2e9, 0.1, 0.2), 2), 1, TOL);
+	assert_near(noise3(v3(1e10, 2e10, 3e10), 2), 1, TOL);
+	assert_near(noise3(v3(-1e10, 2.3e10, -3e10), 2), 0, TOL);
+	assert_near(noise3(v3(5e9, 1e9, 7e9), 1), 0, TOL);
+	assert_near(noise3(v3(3e9, 3e9, 3e9), 1), 1, TOL);
+	assert_near(noise3(v3(1e10, 1e10, -1e10), 2), 1, TOL);
+}
+
 static void test_noise_generator1_clips(void **state)
 {
 	(void)state;
@@ -614,6 +636,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_noise_generators_1_2),
 		cmocka_unit_test(test_noise_generator1_clips),
+		cmocka_unit_test(test_noise_beyond_int),
 		cmocka_unit_test(test_generator1_patterns),
 		cmocka_unit_test(test_agate_measured),
 		cmocka_unit_test(test_ripples_waves_measured),
