@@ -6,6 +6,7 @@
 #include "lang/parser.h"
 
 #include "lang/intern.h"
+#include "lang/ustr.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -836,7 +837,11 @@ static void dir_include(struct parser *p, struct srcpos at)
 /* #debug / #warning / #error STRING */
 static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 {
-	const char *text = parse_string(p);
+	const char *str = parse_string(p);
+	char *text = malloc(strlen(str) + 1);
+	if (!text) abort();
+	ustr_to_ascii(str, text);
+	int slot = parse_own(p, text, free);
 	if (which == KW_DEBUG) {
 		parse_debug_write(p, text);
 	} else if (which == KW_WARNING) {
@@ -844,6 +849,8 @@ static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 	} else {
 		parse_error_at(p, at, "#error: %s", text);
 	}
+	parse_release(p, slot);
+	free(text);
 }
 
 void parse_debug_write(struct parser *p, const char *text)
