@@ -865,12 +865,14 @@ void parse_debug_write(struct parser *p, const char *text)
 			continue;
 		}
 		if (p->debug_len == WIDTH) {
-			/* Break before the last space if there is one (the space
-			 * starts the next line), else after 80 characters; a
-			 * space arriving now is the last (POV-Ray then keeps the
-			 * 80 characters whole). */
+			/* Break before the last space if there is one in columns
+			 * 62 to 80 (the space starts the next line), else after 80
+			 * characters; a space arriving now is the last (POV-Ray
+			 * then keeps the 80 characters whole). Measured: a space
+			 * in column 62 breaks the line there, one in column 61 or
+			 * before does not (tests/lang/debug-wrap-lookback). */
 			int cut = WIDTH;
-			for (int i = WIDTH - 1; i > 0 && *c != ' '; i--)
+			for (int i = WIDTH - 1; i > WIDTH - 20 && *c != ' '; i--)
 				if (p->debug_line[i] == ' ') {
 					cut = i;
 					break;
