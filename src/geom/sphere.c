@@ -133,7 +133,8 @@ static const struct object_ops sphere_ops = {
 
 struct object *sphere_new(vec3 center, double radius, struct srcpos pos)
 {
-	struct sphere *s = calloc(1, sizeof *s);
+	/* Every field is written (object_init writes the whole header). */
+	struct sphere *s = malloc(sizeof *s);
 	if (!s) abort();
 	object_init(&s->base, &sphere_ops, pos);
 	s->center = center;

@@ -5,6 +5,7 @@
 
 #include "geom/csg.h"
 #include "lang/intern.h"
+#include "lang/ustr.h"
 #include "math/mat.h"
 
 #include <ctype.h>
@@ -355,13 +356,30 @@ struct value builtin_call(struct parser *p)
 		const char *a = arg_string(p, name);
 		comma(p);
 		const char *b = arg_string(p, name);
-		int c = strcmp(a, b);
-		r = val_float(c < 0 ? -1 : c > 0 ? 1 : 0, at);
+		/* POV-Ray's: the difference of the first codes that differ
+		 * (the end counting as 0), measured: strcmp("abc", "ab") = 99. */
+		double c = 0;
+		for (;;) {
+			size_t la = 0, lb = 0;
+			uint32_t ca = *a ? ustr_get(a, &la) : 0, cb = *b ? ustr_get(b, &lb) : 0;
+			if (ca != cb || !ca) {
+				c = (double)ca - (double)cb;
+				break;
+			}
+			a += la;
+			b += lb;
+		}
+		r = val_float(c, at);
 		break;
 	}
-	case KW_STRLEN: r = val_float((double)strlen(arg_string(p, name)), at); break;
+	case KW_STRLEN: r = val_float((double)ustr_len(arg_string(p, name)), at); break;
 	case KW_VAL: r = val_float(strtod(arg_string(p, name), NULL), at); break;
-	case KW_ASC: r = val_float((unsigned char)arg_string(p, name)[0], at); break;
+	case KW_ASC: {
+		const char *s = arg_string(p, name);
+		size_t l;
+		r = val_float(*s ? ustr_get(s, &l) : 0, at);
+		break;
+	}
 	case KW_VDOT: {
 		vec3 a = arg_vec3(p, name);
 		comma(p);
@@ -472,9 +490,13 @@ struct value builtin_call(struct parser *p)
 	}
 	case KW_TRACE: return f_trace(p, at);
 	case KW_CHR: {
-		double c = arg_float(p, name);
-		char ch = (char)(int)c;
-		r = str_value(p, &ch, 1, at);
+		double c = trunc(arg_float(p, name));
+		/* POV-Ray's codes are 16 bits: "Value 70000 cannot be used in chr()". */
+		if (!(c >= 0 && c <= USTR_MAX))
+			parse_error_at(p, at, "chr(%.15g): a character code is 0 to %d", c, USTR_MAX);
+		char ch[4] = {0};
+		size_t n = c == 0 ? 1 : ustr_put(ch, (uint32_t)c);
+		r = str_value(p, ch, n, at);
 		break;
 	}
 	case KW_CONCAT: {
@@ -530,14 +552,14 @@ struct value builtin_call(struct parser *p)
 		double start = arg_float(p, name);
 		comma(p);
 		double len = arg_float(p, name);
-		size_t n = strlen(s);
+		size_t n = ustr_len(s);
 		/* Checked as floats first: a huge one has no long value. */
 		double fst = trunc(start), fln = trunc(len);
 		if (!(fst >= 1) || !(fln >= 0) || fst + fln - 1 > (double)n)
 			parse_error_at(p, at, "substr(\"%s\", %.15g, %.15g) reaches past the end of the string (length %zu)", s,
 			               fst == fst ? fst : 0, fln == fln ? fln : 0, n);
-		long st = (long)fst, ln = (long)fln;
-		r = str_value(p, s + st - 1, (size_t)ln, at);
+		size_t st = ustr_offset(s, (size_t)fst - 1);
+		r = str_value(p, s + st, ustr_offset(s + st, (size_t)fln), at);
 		break;
 	}
 	case KW_VSTR: {

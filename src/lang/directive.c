@@ -6,6 +6,7 @@
 #include "lang/parser.h"
 
 #include "lang/intern.h"
+#include "lang/ustr.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -836,7 +837,11 @@ static void dir_include(struct parser *p, struct srcpos at)
 /* #debug / #warning / #error STRING */
 static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 {
-	const char *text = parse_string(p);
+	const char *str = parse_string(p);
+	char *text = malloc(strlen(str) + 1);
+	if (!text) abort();
+	ustr_to_ascii(str, text);
+	int slot = parse_own(p, text, free);
 	if (which == KW_DEBUG) {
 		parse_debug_write(p, text);
 	} else if (which == KW_WARNING) {
@@ -844,6 +849,8 @@ static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 	} else {
 		parse_error_at(p, at, "#error: %s", text);
 	}
+	parse_release(p, slot);
+	free(text);
 }
 
 void parse_debug_write(struct parser *p, const char *text)
@@ -858,12 +865,14 @@ void parse_debug_write(struct parser *p, const char *text)
 			continue;
 		}
 		if (p->debug_len == WIDTH) {
-			/* Break before the last space if there is one (the space
-			 * starts the next line), else after 80 characters; a
-			 * space arriving now is the last (POV-Ray then keeps the
-			 * 80 characters whole). */
+			/* Break before the last space if there is one in columns
+			 * 62 to 80 (the space starts the next line), else after 80
+			 * characters; a space arriving now is the last (POV-Ray
+			 * then keeps the 80 characters whole). Measured: a space
+			 * in column 62 breaks the line there, one in column 61 or
+			 * before does not (tests/lang/debug-wrap-lookback). */
 			int cut = WIDTH;
-			for (int i = WIDTH - 1; i > 0 && *c != ' '; i--)
+			for (int i = WIDTH - 1; i > WIDTH - 20 && *c != ' '; i--)
 				if (p->debug_line[i] == ' ') {
 					cut = i;
 					break;

@@ -323,7 +323,12 @@ static int color_component(enum kw k)
 static struct value parse_color_body(struct parser *p, struct srcpos at)
 {
 	struct value c;
-	const struct token *t = parse_peek(p);
+	/* An identifier is not fetched (which looks it up for a macro call)
+	 * before its compiled form is tried: that form only runs where the
+	 * name holds a colour or a number. */
+	const struct token *t = parse_peek_raw(p);
+	if (!t || t->kind == TOK_HASH)
+		t = parse_peek(p);
 	if (t->kind == TOK_KEYWORD && color_component((enum kw)t->kw) >= 0) {
 		double z[5] = {0};
 		c = val_vector(5, z, VAL_COLOR, at);

@@ -5,6 +5,7 @@
 #include "lang/parser.h"
 
 #include "lang/intern.h"
+#include "lang/ustr.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -349,7 +350,15 @@ void parse_write(struct parser *p)
 			continue;
 		}
 		switch (v.kind) {
-		case VAL_STRING: fputs(v.str, f->fp); break;
+		case VAL_STRING:
+			/* Non-ASCII characters as spaces, as POV-Ray writes them. */
+			for (const char *c = v.str; *c;) {
+				size_t l;
+				ustr_get(c, &l);
+				fputc((unsigned char)*c < 0x80 ? *c : ' ', f->fp);
+				c += l;
+			}
+			break;
 		case VAL_FLOAT: fprintf(f->fp, "%g", v.v[0]); break;
 		case VAL_VECTOR: case VAL_COLOR:
 			fputc('<', f->fp);

@@ -171,27 +171,33 @@ static void c_primary(struct fcomp *c)
 			emit(c, FN_ARG, pi, 0, 1);
 			return;
 		}
-		struct value *v = parse_lookup(p, name);
+		const struct value *v = parse_lookup(p, name);
 		if (!v)
 			parse_undefined(p, name);
+		parse_advance(p);
+		if (v->kind == VAL_ARRAY) {
+			/* An element, F[K](x, y, z) or A[i]: as POV-Ray, the
+			 * indices are read when the function is (ordinary
+			 * expressions, so not of the function's parameters). */
+			size_t idx = parse_array_index(p, v->arr, name, at);
+			v = &v->arr->elems[idx];
+			if (v->kind == VAL_NONE)
+				parse_error_at(p, at, "element of array '%s' used before it was given a value", name);
+		}
 		if (v->kind == VAL_FLOAT) {
 			emit(c, FN_CONST, 0, v->v[0], 1);
-			parse_advance(p);
 			return;
 		}
 		if (v->kind == VAL_FUNCTION && fn_is_vector(v->fn)) {
-			struct fn *callee = v->fn;
-			parse_advance(p);
-			c_call_vector(c, callee, name, at);
+			c_call_vector(c, v->fn, name, at);
 			return;
 		}
 		if (v->kind == VAL_FUNCTION) {
-			struct fn *callee = v->fn;
-			parse_advance(p);
-			c_call_user(c, callee, name, at);
+			c_call_user(c, v->fn, name, at);
 			return;
 		}
-		parse_error(p, "'%s' is a %s; a function body can use floats and functions only", name, val_kind_name(v->kind));
+		parse_error_at(p, at, "%s'%s' is a %s; a function body can use floats and functions only",
+		               p->prev.kind == TOK_RBRACKET ? "the element of array " : "", name, val_kind_name(v->kind));
 	}
 	case TOK_KEYWORD: {
 		enum kw k = (enum kw)t->kw;

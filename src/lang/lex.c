@@ -1,6 +1,8 @@
 /* lex.c: the hand-written lexer (see lex.h). */
 #include "lang/lex.h"
 
+#include "lang/ustr.h"
+
 #include "lang/intern.h"
 
 #include <ctype.h>
@@ -412,9 +414,9 @@ static bool lex_string(struct lexer *lx)
 			case '\'': c = '\''; break;
 			case '"': c = '"'; break;
 			case 'u': {
-				/* \uNNNN: a character by its code; codes up to 255 are one
-				 * byte (so asc() and strlen() count characters), others
-				 * are written as UTF-8. */
+				/* \uNNNN: a character by its code, kept whatever the
+				 * charset (ustr.h: ASCII is one byte, other codes the
+				 * coded form). */
 				unsigned code = 0;
 				int k;
 				for (k = 0; k < 4 && lx->i < lx->n && isxdigit((unsigned char)lx->s[lx->i]); k++) {
@@ -425,16 +427,14 @@ static bool lex_string(struct lexer *lx)
 					diag_report(lx->d, DIAG_ERROR, epos, "'\\u' needs four hexadecimal digits");
 					return false;
 				}
-				if (code < 256) {
+				if (code < 0x80) {
 					c = (char)code;
 				} else {
-					if (code < 0x800) {
-						sput(lx, &len, (char)(0xc0 | (code >> 6)));
-					} else {
-						sput(lx, &len, (char)(0xe0 | (code >> 12)));
-						sput(lx, &len, (char)(0x80 | ((code >> 6) & 0x3f)));
-					}
-					c = (char)(0x80 | (code & 0x3f));
+					char enc[4];
+					ustr_put(enc, code);
+					for (int j = 0; j < 3; j++)
+						sput(lx, &len, enc[j]);
+					c = enc[3];
 				}
 				break;
 			}
@@ -442,6 +442,14 @@ static bool lex_string(struct lexer *lx)
 				diag_report(lx->d, DIAG_ERROR, epos, "unknown escape sequence '\\%c' in string", e);
 				return false;
 			}
+		} else if ((unsigned char)c == USTR_CODED) {
+			/* A raw 0xFF would begin a coded character: it is the
+			 * code 0xFF. */
+			char enc[4];
+			ustr_put(enc, 0xFF);
+			for (int j = 0; j < 3; j++)
+				sput(lx, &len, enc[j]);
+			c = enc[3];
 		}
 		sput(lx, &len, c);
 	}

@@ -10,6 +10,7 @@
 #include "geom/shapes.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -141,9 +142,10 @@ struct shape_args {
 	enum kw kw;
 	vec3 v[6];
 	double f[4];
-	double coef[120];
 	int order;
 	bool open, sturm;
+	double coef[120];            /* last: only a polynomial writes and reads it (its
+	                              * exact count), so the rest is cleared alone */
 };
 
 /* The comma between arguments: optional, as in POV-Ray
@@ -1000,7 +1002,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		break;
 	}
 	default:
-		memset(&args, 0, sizeof args);
+		memset(&args, 0, offsetof(struct shape_args, coef));
 		args.kw = k;
 		parse_shape_args(p, &args);
 		s.args = &args;

@@ -301,7 +301,7 @@ static void fetch(struct parser *p)
 }
 
 
-const struct token *parse_peek(struct parser *p)
+const struct token *parse_peek_fetch(struct parser *p)
 {
 	drop_sentinel(p);
 	if (!p->have_cur)
@@ -347,64 +347,11 @@ const struct token *parse_peek_raw(struct parser *p)
 	return f->pos < f->end ? &f->toks[f->pos] : NULL;
 }
 
-void parse_advance(struct parser *p)
+void parse_expect_fail(struct parser *p, enum tok_kind k)
 {
-	drop_sentinel(p);
-	if (!p->have_cur)
-		fetch(p);
-	p->prev = p->cur;
-	p->have_cur = false;
-}
-
-bool parse_is(struct parser *p, enum tok_kind k) { return parse_peek(p)->kind == k; }
-bool parse_is_kw(struct parser *p, enum kw k)
-{
-	const struct token *t = parse_peek(p);
-	return t->kind == TOK_KEYWORD && t->kw == k;
-}
-
-/* The common case of parse_accept and parse_expect: no lookahead held and
- * the next token of the frame is of kind k, which is neither '#' nor an
- * identifier (those may run a directive or a macro): take it in place. */
-static inline bool take_raw(struct parser *p, enum tok_kind k)
-{
-	if (p->have_cur || k == TOK_HASH || k == TOK_IDENT)
-		return false;
-	struct frame *f = &p->frames[p->nframes - 1];
-	if (f->pos >= f->end || f->toks[f->pos].kind != k)
-		return false;
-	p->prev = f->toks[f->pos++];
-	return true;
-}
-
-bool parse_accept(struct parser *p, enum tok_kind k)
-{
-	if (take_raw(p, k))
-		return true;
-	if (parse_peek(p)->kind != k)
-		return false;
-	parse_advance(p);
-	return true;
-}
-
-bool parse_accept_kw(struct parser *p, enum kw k)
-{
-	if (!parse_is_kw(p, k))
-		return false;
-	parse_advance(p);
-	return true;
-}
-
-void parse_expect(struct parser *p, enum tok_kind k)
-{
-	if (take_raw(p, k))
-		return;
-	if (parse_peek(p)->kind != k) {
-		char what[32];
-		snprintf(what, sizeof what, "'%s'", lex_kind_name(k));
-		parse_expected(p, what);
-	}
-	parse_advance(p);
+	char what[32];
+	snprintf(what, sizeof what, "'%s'", lex_kind_name(k));
+	parse_expected(p, what);
 }
 
 /* ---- symbols ---- */

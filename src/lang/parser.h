@@ -146,8 +146,17 @@ static inline bool parse_set_rel(struct parser *p, bool on)
 }
 
 /* The token stream (directives already run). parse_peek returns the
- * current token, fetching it if needed; parse_advance consumes it. */
-const struct token *parse_peek(struct parser *p);
+ * current token, fetching it if needed; parse_advance consumes it. The
+ * common cases are inline (a parse reads every token through them);
+ * parse_peek_fetch is the rest of parse_peek: it runs the directives and
+ * macro calls before the next token. */
+const struct token *parse_peek_fetch(struct parser *p);
+static inline const struct token *parse_peek(struct parser *p)
+{
+	if (p->have_cur && p->cur.kind != TOK_HASH)
+		return &p->cur;
+	return parse_peek_fetch(p);
+}
 /* The lookahead where a value could continue (an operator, '.', ';'...).
  * While a directive's operands are read, a directive there does not run
  * yet: it shows as TOK_HASH, so `#declare A = 1; #declare B = A;` and
@@ -157,12 +166,48 @@ const struct token *parse_peek_cont(struct parser *p);
  * call first: the lookahead if one was taken, else the top frame's next
  * token (NULL at the frame's end). */
 const struct token *parse_peek_raw(struct parser *p);
-void parse_advance(struct parser *p);
-bool parse_is(struct parser *p, enum tok_kind k);
-bool parse_is_kw(struct parser *p, enum kw k);
-bool parse_accept(struct parser *p, enum tok_kind k);
-bool parse_accept_kw(struct parser *p, enum kw k);
-void parse_expect(struct parser *p, enum tok_kind k);
+static inline void parse_advance(struct parser *p)
+{
+	p->prev = *parse_peek(p);
+	p->have_cur = false;
+}
+static inline bool parse_is(struct parser *p, enum tok_kind k) { return parse_peek(p)->kind == k; }
+static inline bool parse_is_kw(struct parser *p, enum kw k)
+{
+	const struct token *t = parse_peek(p);
+	return t->kind == TOK_KEYWORD && t->kw == k;
+}
+/* Take the next token if it is of kind k. With no lookahead held, a kind
+ * that runs nothing before it (not '#', not an identifier, which may be a
+ * macro call) is taken from the frame in place. */
+static inline bool parse_accept(struct parser *p, enum tok_kind k)
+{
+	if (!p->have_cur && k != TOK_HASH && k != TOK_IDENT) {
+		struct frame *f = &p->frames[p->nframes - 1];
+		if (f->pos < f->end && f->toks[f->pos].kind == k) {
+			p->prev = f->toks[f->pos++];
+			return true;
+		}
+	}
+	if (parse_peek(p)->kind != k)
+		return false;
+	parse_advance(p);
+	return true;
+}
+static inline bool parse_accept_kw(struct parser *p, enum kw k)
+{
+	if (!parse_is_kw(p, k))
+		return false;
+	parse_advance(p);
+	return true;
+}
+/* parse_accept, or an error "expected 'K'". */
+void parse_expect_fail(struct parser *p, enum tok_kind k);
+static inline void parse_expect(struct parser *p, enum tok_kind k)
+{
+	if (!parse_accept(p, k))
+		parse_expect_fail(p, k);
+}
 
 /* Ownership during a parse: protect a pointer until released. */
 int parse_own(struct parser *p, void *ptr, void (*fn)(void *));

@@ -4,6 +4,7 @@
 
 #include "font/ttf.h"
 #include "geom/shapes.h"
+#include "lang/ustr.h"
 
 #include <ctype.h>
 #include <dirent.h>
@@ -234,11 +235,31 @@ static int utf8_seq(const unsigned char *s, size_t n, uint32_t *c)
 	return len;
 }
 
+/* Under charset ascii POV-Ray looks a character code up in the font's
+ * Macintosh (Mac Roman) table: measured with DejaVuSans, "\u00e9" is the
+ * glyph of U+00C8 (Mac Roman 0xE9), "\u00d6" that of U+00F7, and a code
+ * above 0xFF has no glyph (the font's missing-glyph box, as "\u0016").
+ * The Unicode characters of Mac Roman's codes 0x80..0xFF: */
+static const uint16_t mac_roman[128] = {
+	0x00C4, 0x00C5, 0x00C7, 0x00C9, 0x00D1, 0x00D6, 0x00DC, 0x00E1, 0x00E0, 0x00E2, 0x00E4, 0x00E3, 0x00E5,
+	0x00E7, 0x00E9, 0x00E8, 0x00EA, 0x00EB, 0x00ED, 0x00EC, 0x00EE, 0x00EF, 0x00F1, 0x00F3, 0x00F2, 0x00F4,
+	0x00F6, 0x00F5, 0x00FA, 0x00F9, 0x00FB, 0x00FC, 0x2020, 0x00B0, 0x00A2, 0x00A3, 0x00A7, 0x2022, 0x00B6,
+	0x00DF, 0x00AE, 0x00A9, 0x2122, 0x00B4, 0x00A8, 0x2260, 0x00C6, 0x00D8, 0x221E, 0x00B1, 0x2264, 0x2265,
+	0x00A5, 0x00B5, 0x2202, 0x2211, 0x220F, 0x03C0, 0x222B, 0x00AA, 0x00BA, 0x03A9, 0x00E6, 0x00F8, 0x00BF,
+	0x00A1, 0x00AC, 0x221A, 0x0192, 0x2248, 0x2206, 0x00AB, 0x00BB, 0x2026, 0x00A0, 0x00C0, 0x00C3, 0x00D5,
+	0x0152, 0x0153, 0x2013, 0x2014, 0x201C, 0x201D, 0x2018, 0x2019, 0x00F7, 0x25CA, 0x00FF, 0x0178, 0x2044,
+	0x20AC, 0x2039, 0x203A, 0xFB01, 0xFB02, 0x2021, 0x00B7, 0x201A, 0x201E, 0x2030, 0x00C2, 0x00CA, 0x00C1,
+	0x00CB, 0x00C8, 0x00CD, 0x00CE, 0x00CF, 0x00CC, 0x00D3, 0x00D4, 0xF8FF, 0x00D2, 0x00DA, 0x00DB, 0x00D9,
+	0x0131, 0x02C6, 0x02DC, 0x00AF, 0x02D8, 0x02D9, 0x02DA, 0x00B8, 0x02DD, 0x02DB, 0x02C7,
+};
+
 /* The code points of string s by the scene's charset, into a malloc'd
- * array (*n of them). A string holds UTF-8 and, from \uNNNN escapes below
- * 256, single bytes (lex.c): a byte that begins no UTF-8 sequence is that
- * code. With charset ascii (POV-Ray's default) a UTF-8 sequence from the
- * file becomes one space per byte, with a warning, as POV-Ray does. */
+ * array (*n of them). A string holds the file's bytes and characters given
+ * by their codes (ustr.h: \uNNNN, chr): under charset utf8 (and sys) a
+ * code is that character, under ascii it is looked up as POV-Ray does
+ * (mac_roman above). A byte that begins no UTF-8 sequence is that code.
+ * With charset ascii (POV-Ray's default) a UTF-8 sequence from the file
+ * becomes one space per byte, with a warning, as POV-Ray does. */
 static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpos at)
 {
 	size_t len = strlen(s);
@@ -250,6 +271,15 @@ static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpo
 	size_t k = 0;
 	for (size_t i = 0; i < len;) {
 		uint32_t c;
+		size_t cl;
+		if (ustr_is_coded(s + i)) {
+			c = ustr_get(s + i, &cl);
+			if (ascii && c >= 0x80)
+				c = c <= 0xFF ? mac_roman[c - 0x80] : 0xFFFF; /* U+FFFF: no glyph in any font */
+			out[k++] = c;
+			i += cl;
+			continue;
+		}
 		int l = utf8_seq(u + i, len - i, &c);
 		if (l == 0) {
 			out[k++] = u[i++];

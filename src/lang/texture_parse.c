@@ -295,6 +295,14 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 		struct xform xf;
 		enum pattern_kind pk;
 		enum map_kind mk;
+		if (t->kind == TOK_KEYWORD && (t->kw == KW_COLOR || t->kw == KW_COLOUR) && (*pig)->kind == PIGMENT_SOLID) {
+			/* The common `pigment { color C }`: what the tests below
+			 * would find (no transformation or pattern starts with
+			 * `color`, and it starts an expression). */
+			struct pigment *pg = own_pigment(pig);
+			pg->color = parse_color(p);
+			continue;
+		}
 		if (parse_transform_item(p, &xf)) {
 			*pig = pigment_transform(*pig, &xf);
 			continue;

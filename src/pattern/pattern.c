@@ -62,15 +62,9 @@ static enum wave_type default_wave(enum pattern_kind k)
 
 struct pattern pattern_make(enum pattern_kind k)
 {
-	struct pattern pt;
-	memset(&pt, 0, sizeof pt);
+	struct pattern pt = PATTERN_INIT_NONE;
 	pt.kind = k;
-	pt.frequency = 1.0;
 	pt.wave = default_wave(k);
-	pt.wave_exponent = 1.0;
-	pt.turb.octaves = 6;
-	pt.turb.omega = 0.5;
-	pt.turb.lambda = 2.0;
 	/* the kinds' own parameters, POV-Ray's defaults (the manual) */
 	switch (k) {
 	case PAT_BRICK:

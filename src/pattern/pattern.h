@@ -148,6 +148,15 @@ struct pattern_ctx {
 	int number_of_waves;         /* global_settings { number_of_waves }: 0 means the default, 10 */
 };
 
+/* The initialiser of a PAT_NONE pattern with POV-Ray's defaults for the
+ * modifiers (what pattern_make(PAT_NONE) returns), for static templates
+ * of the structs that hold a pattern. */
+#define PATTERN_INIT_NONE                                                       \
+	{                                                                       \
+		.kind = PAT_NONE, .wave = WAVE_RAMP, .wave_exponent = 1.0,      \
+		.frequency = 1.0, .turb = {.octaves = 6, .omega = 0.5, .lambda = 2.0}, \
+	}
+
 /* A pattern of kind k with POV-Ray's defaults for its modifiers. */
 struct pattern pattern_make(enum pattern_kind k);
 /* A copy that shares or copies what src refers to. */

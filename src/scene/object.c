@@ -1,6 +1,7 @@
 /* object.c: the shape-independent half of every object (see object.h). */
 #include "scene/object.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,17 +12,16 @@ enum { CLIP_MAX_CROSSINGS = 100000 };
 
 void object_init(struct object *o, const struct object_ops *ops, struct srcpos pos)
 {
+	/* The whole header from a template (a scene may make millions of
+	 * objects): so a primitive allocated without clearing is complete. */
+	static const struct object tmpl = {
+		.xf = {.fwd = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}},
+		       .inv = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}},
+		.bounds = {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}},
+	};
+	*o = tmpl;
 	o->ops = ops;
-	o->xf = xform_identity();
-	o->has_xf = false;
-	o->tex = NULL;
-	o->interior = NULL;
-	o->flags = 0;
-	o->bounds = aabb_empty();
-	o->clip = NULL;
-	o->bound = NULL;
 	o->pos = pos;
-	o->id = 0;
 }
 
 void object_transform(struct object *o, const struct xform *t)

@@ -76,12 +76,21 @@ void blend_map_find(const struct blend_map *m, double v, int *lo, int *hi, doubl
 
 /* ---- pigment ---- */
 
+/* Parsing makes a pigment and a texture for nearly every object, so they
+ * are copied whole from templates (static storage: padding zero too, as
+ * calloc's) instead of zeroed and filled field by field. */
+static void *xmalloc(size_t size)
+{
+	void *p = malloc(size);
+	if (!p) abort();
+	return p;
+}
+
 struct pigment *pigment_new(void)
 {
-	struct pigment *p = xcalloc(1, sizeof *p);
-	p->refs = 1;
-	p->kind = PIGMENT_SOLID;
-	p->pat = pattern_make(PAT_NONE);
+	static const struct pigment tmpl = {.refs = 1, .kind = PIGMENT_SOLID, .pat = PATTERN_INIT_NONE};
+	struct pigment *p = xmalloc(sizeof *p);
+	*p = tmpl;
 	return p;
 }
 
@@ -151,20 +160,19 @@ struct normal *normal_copy(const struct normal *n)
 
 /* ---- finish ---- */
 
+/* POV-Ray's finish defaults, the initialiser of finish_default()'s value
+ * and of the finish in the texture template. */
+#define FINISH_INIT_DEFAULT                                                     \
+	{                                                                       \
+		.ambient = {0.1, 0.1, 0.1}, .diffuse = 0.6, .brilliance = 1.0,  \
+		.phong = 0.0, .phong_size = 40.0, .specular = 0.0,              \
+		.roughness = 0.05, .reflection_falloff = 1.0,                   \
+		.reflection_exponent = 1.0, .irid_thickness = 0.0,              \
+	}
+
 struct finish finish_default(void)
 {
-	struct finish f = {
-		.ambient = {0.1, 0.1, 0.1},
-		.diffuse = 0.6,
-		.brilliance = 1.0,
-		.phong = 0.0,
-		.phong_size = 40.0,
-		.specular = 0.0,
-		.roughness = 0.05,
-		.reflection_falloff = 1.0,
-		.reflection_exponent = 1.0,
-		.irid_thickness = 0.0,
-	};
+	static const struct finish f = FINISH_INIT_DEFAULT;
 	return f;
 }
 
@@ -205,12 +213,12 @@ struct interior *interior_copy(const struct interior *i)
 
 struct texture *texture_new(void)
 {
-	struct texture *t = xcalloc(1, sizeof *t);
-	t->refs = 1;
-	t->kind = TEX_PLAIN;
+	static const struct texture tmpl = {
+		.refs = 1, .kind = TEX_PLAIN, .finish = FINISH_INIT_DEFAULT, .pat = PATTERN_INIT_NONE,
+	};
+	struct texture *t = xmalloc(sizeof *t);
+	*t = tmpl;
 	t->pigment = pigment_new();
-	t->finish = finish_default();
-	t->pat = pattern_make(PAT_NONE);
 	return t;
 }
 
