@@ -10,6 +10,7 @@
 #include "geom/mesh.h"
 #include "scene/camera.h"
 
+#include <limits.h>
 #include <stdlib.h>
 
 /* What a camera block said, beside the vectors stored at once. */
@@ -69,7 +70,10 @@ static void parse_mesh_camera(struct parser *p, struct camera *c)
 	double rays = parse_float(p);
 	if (rays < 1)
 		parse_error_at(p, rpos, "a mesh camera needs at least 1 ray per pixel, not %g", rays);
-	m->rays = (int)rays;
+	/* Held as an int: more rays per pixel than that mean nothing, since
+	 * distribution 0 needs a mesh per ray, 2 and 3 take one ray and 1
+	 * shoots only the first (see camera_mesh_ray). */
+	m->rays = rays < INT_MAX ? (int)rays : INT_MAX;
 	struct srcpos dpos = parse_peek(p)->pos;
 	double dist = parse_float(p);
 	if (!(dist >= 0 && dist < 4))

@@ -419,7 +419,9 @@ rgb camera_sample(struct tracer *tr, double x, double y, int w, int h, int px, i
 		/* The mean of the rays that have a face; none: black. */
 		rgb sum = rgb_make(0, 0, 0);
 		int n = 0;
-		for (int k = 0; k < cam->mesh->rays; k++) {
+		/* Distribution 1 shoots only its first ray (camera_mesh_ray). */
+		int nrays = cam->mesh->dist == 1 ? 1 : cam->mesh->rays;
+		for (int k = 0; k < nrays; k++) {
 			struct ray r;
 			if (!camera_mesh_ray(cam, x, y, w, h, k, &r))
 				continue;
