@@ -982,6 +982,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		s.o = parse_object2(p, k, at);
 		break;
 	case KW_BLOB:
+	case KW_HEIGHT_FIELD:
 		memset(&args, 0, sizeof args);
 		args.kw = k;
 		s.args = &args;
