@@ -70,7 +70,21 @@ struct blob {
 	bool sturm, hierarchy;
 	struct aabb box;      /* object-space bounds (positive elements) */
 	bool box_stale;       /* a component moved since box was computed */
+	bool any_tex;         /* some component has a texture (set by prepare) */
+	struct bnode *node;   /* the hierarchy over the components (prepare), or NULL */
+	int *order;           /* the components in the hierarchy's leaf order */
 };
+
+/* A node of the hierarchy: its box (the union of its components' element
+ * spheres, negative ones included) and either two children or a run of
+ * order[]. */
+struct bnode {
+	struct aabb box;
+	int left, right;      /* children, or -1 for a leaf */
+	int first, count;     /* a leaf's components: order[first .. first + count) */
+};
+
+enum { LEAF_SIZE = 4, TREE_DEPTH = 64 };
 
 static struct blob *blob_of(const struct object *o)
 {
@@ -182,9 +196,196 @@ static const struct aabb *box_of(const struct blob *B)
 	return &B->box;
 }
 
+/* The box of component i's element spheres. */
+static struct aabb comp_box(const struct blob *B, int i)
+{
+	const struct comp *c = &B->comp[i];
+	struct aabb b = aabb_empty();
+	for (int k = 0; k < (c->cyl ? 3 : 1); k++) {
+		const struct elem *e = &B->el[c->first + k];
+		vec3 rr = v3(e->br, e->br, e->br);
+		b.lo = v3_min(b.lo, v3_sub(e->bc, rr));
+		b.hi = v3_max(b.hi, v3_add(e->bc, rr));
+	}
+	return b;
+}
+
+static double axis_of(vec3 v, int k)
+{
+	return k == 0 ? v.x : k == 1 ? v.y : v.z;
+}
+
+/* Build the subtree of order[first .. first + count) into node n (split at
+ * the median of the boxes' centres along their widest axis); returns the
+ * next free node. */
+static int build_node(struct blob *B, const struct aabb *cb, int n, int first, int count, int depth)
+{
+	struct bnode *nd = &B->node[n];
+	nd->box = aabb_empty();
+	struct aabb cen = aabb_empty();
+	for (int k = first; k < first + count; k++) {
+		const struct aabb *b = &cb[B->order[k]];
+		nd->box.lo = v3_min(nd->box.lo, b->lo);
+		nd->box.hi = v3_max(nd->box.hi, b->hi);
+		vec3 c = v3_scale(v3_add(b->lo, b->hi), 0.5);
+		cen.lo = v3_min(cen.lo, c);
+		cen.hi = v3_max(cen.hi, c);
+	}
+	nd->first = first;
+	nd->count = count;
+	nd->left = nd->right = -1;
+	if (count <= LEAF_SIZE || depth >= TREE_DEPTH - 2)
+		return n + 1;
+	vec3 ext = v3_sub(cen.hi, cen.lo);
+	int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+	/* Quickselect the median (Hoare's partition): linear on average. */
+	int lo = first, hi = first + count - 1, mid = first + count / 2;
+	while (lo < hi) {
+		const struct aabb *pb = &cb[B->order[(lo + hi) / 2]];
+		double pivot = axis_of(pb->lo, axis) + axis_of(pb->hi, axis);
+		int a = lo, z = hi;
+		while (a <= z) {
+			while (axis_of(cb[B->order[a]].lo, axis) + axis_of(cb[B->order[a]].hi, axis) < pivot)
+				a++;
+			while (axis_of(cb[B->order[z]].lo, axis) + axis_of(cb[B->order[z]].hi, axis) > pivot)
+				z--;
+			if (a <= z) {
+				int t = B->order[a];
+				B->order[a] = B->order[z];
+				B->order[z] = t;
+				a++;
+				z--;
+			}
+		}
+		if (mid <= z)
+			hi = z;
+		else if (mid >= a)
+			lo = a;
+		else
+			break;
+	}
+	int next = n + 1;
+	nd = &B->node[n];
+	nd->left = next;
+	next = build_node(B, cb, next, first, mid - first, depth + 1);
+	B->node[n].right = next;
+	return build_node(B, cb, next, mid, first + count - mid, depth + 1);
+}
+
+static void drop_tree(struct blob *B)
+{
+	free(B->node);
+	free(B->order);
+	B->node = NULL;
+	B->order = NULL;
+}
+
+/* The box, and with hierarchy on the tree over the components (read-only
+ * while rendering; before prepare the components are scanned in turn). */
 static void blob_prepare(struct object *o)
 {
-	box_of(blob_of(o));
+	struct blob *B = blob_of(o);
+	box_of(B);
+	B->any_tex = false;
+	for (size_t i = 0; i < B->ncomp; i++)
+		B->any_tex |= B->tex[i] != NULL;
+	drop_tree(B);
+	if (!B->hierarchy || B->ncomp <= LEAF_SIZE)
+		return;
+	int n = (int)B->ncomp;
+	struct aabb *cb = malloc((size_t)n * sizeof *cb);
+	B->order = malloc((size_t)n * sizeof *B->order);
+	B->node = malloc((size_t)(2 * n) * sizeof *B->node);
+	if (!cb || !B->order || !B->node) abort();
+	for (int i = 0; i < n; i++) {
+		cb[i] = comp_box(B, i);
+		B->order[i] = i;
+	}
+	build_node(B, cb, 0, 0, n, 0);
+	free(cb);
+}
+
+/* Call fn for every component whose box the ray (o, d) may cross (all of
+ * them without a tree). */
+typedef void (*comp_fn)(void *ctx, int comp);
+
+/* Does the line o + t d (inv = 1 / d) cross box b? (The whole line: the
+ * spans are cut to the ray's interval later.) */
+static bool ray_box(const struct aabb *b, vec3 o, vec3 inv)
+{
+	double t0 = -INFINITY, t1 = INFINITY;
+	for (int k = 0; k < 3; k++) {
+		double oo = axis_of(o, k), iv = axis_of(inv, k);
+		double lo = axis_of(b->lo, k), hi = axis_of(b->hi, k);
+		if (isinf(iv)) {
+			if (oo < lo || oo > hi)
+				return false;
+			continue;
+		}
+		double ta = (lo - oo) * iv, tb = (hi - oo) * iv;
+		if (ta > tb) {
+			double t = ta;
+			ta = tb;
+			tb = t;
+		}
+		if (ta > t0)
+			t0 = ta;
+		if (tb < t1)
+			t1 = tb;
+	}
+	return t0 <= t1 + 1e-12 * (1 + fabs(t1));
+}
+
+static void each_on_ray(const struct blob *B, vec3 o, vec3 d, comp_fn fn, void *ctx)
+{
+	if (!B->node) {
+		for (size_t i = 0; i < B->ncomp; i++)
+			fn(ctx, (int)i);
+		return;
+	}
+	vec3 inv = v3(1 / d.x, 1 / d.y, 1 / d.z);
+	int stack[TREE_DEPTH], top = 0;
+	stack[top++] = 0;
+	while (top > 0) {
+		const struct bnode *nd = &B->node[stack[--top]];
+		if (!ray_box(&nd->box, o, inv))
+			continue;
+		if (nd->left < 0) {
+			for (int k = nd->first; k < nd->first + nd->count; k++)
+				fn(ctx, B->order[k]);
+			continue;
+		}
+		stack[top++] = nd->right;
+		stack[top++] = nd->left;
+	}
+}
+
+static bool box_has(struct aabb b, vec3 p)
+{
+	return p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y && p.z >= b.lo.z && p.z <= b.hi.z;
+}
+
+static void each_at_point(const struct blob *B, vec3 p, comp_fn fn, void *ctx)
+{
+	if (!B->node) {
+		for (size_t i = 0; i < B->ncomp; i++)
+			fn(ctx, (int)i);
+		return;
+	}
+	int stack[TREE_DEPTH], top = 0;
+	stack[top++] = 0;
+	while (top > 0) {
+		const struct bnode *nd = &B->node[stack[--top]];
+		if (!box_has(nd->box, p))
+			continue;
+		if (nd->left < 0) {
+			for (int k = nd->first; k < nd->first + nd->count; k++)
+				fn(ctx, B->order[k]);
+			continue;
+		}
+		stack[top++] = nd->right;
+		stack[top++] = nd->left;
+	}
 }
 
 /* ---- the field along a ray ---- */
@@ -219,8 +420,8 @@ static bool elem_span(const struct elem *e, vec3 o, vec3 d, double q[3], double 
 			return false;
 		double sq = sqrt(disc), qq = -0.5 * (b + copysign(sq, b));
 		double ra = qq / a, rb = qq != 0 ? (c - 1) / qq : -ra;
-		t0 = fmin(ra, rb);
-		t1 = fmax(ra, rb);
+		t0 = ra < rb ? ra : rb;
+		t1 = ra < rb ? rb : ra;
 	} else if (c < 1) {
 		t0 = -INFINITY;
 		t1 = INFINITY;
@@ -240,8 +441,15 @@ static bool elem_span(const struct elem *e, vec3 o, vec3 d, double q[3], double 
 	if (e->kind != EL_SPHERE) {
 		if (g1 != 0) {
 			double ta = (alo - g0) / g1, tb = (ahi - g0) / g1;
-			t0 = fmax(t0, fmin(ta, tb));
-			t1 = fmin(t1, fmax(ta, tb));
+			if (ta > tb) {
+				double t = ta;
+				ta = tb;
+				tb = t;
+			}
+			if (ta > t0)
+				t0 = ta;
+			if (tb < t1)
+				t1 = tb;
 		} else if (g0 < alo || g0 > ahi) {
 			return false;
 		}
@@ -298,6 +506,57 @@ typedef bool (*root_sink)(void *ctx, double t);
 
 enum { STACK_SPANS = 128 };
 
+/* The spans of the elements along one ray (blob_hits). */
+struct span_ctx {
+	const struct blob *B;
+	vec3 org, d, so;      /* the ray, and its origin shifted to the box entry */
+	double dd;
+	struct span *sp;      /* stack_spans, or a heap array when more are needed */
+	struct event *ev;     /* room for two events a span */
+	size_t n, cap;
+	struct span stack_spans[STACK_SPANS];
+	struct event stack_ev[2 * STACK_SPANS];
+};
+
+/* Add the spans of component ci's elements that the ray crosses. */
+static void add_spans(void *ctx, int ci)
+{
+	struct span_ctx *sc = ctx;
+	const struct blob *B = sc->B;
+	const struct comp *c = &B->comp[ci];
+	for (int k = 0; k < (c->cyl ? 3 : 1); k++) {
+		const struct elem *e = &B->el[c->first + k];
+		if (!hits_sphere(e, sc->org, sc->d, sc->dd))
+			continue;
+		vec3 lo_o = sc->so, lo_d = sc->d;
+		if (c->has_xf) {
+			lo_o = mat_point(&c->xf.inv, sc->so);
+			lo_d = mat_dir(&c->xf.inv, sc->d);
+		}
+		struct span s;
+		if (!elem_span(e, lo_o, lo_d, s.q, &s.lo, &s.hi))
+			continue;
+		if (sc->n == sc->cap) {
+			/* Rare: more active elements along one ray than the stack
+			 * holds. */
+			size_t ncap = sc->cap * 2;
+			struct span *nsp = malloc(ncap * sizeof *nsp);
+			struct event *nev = malloc(2 * ncap * sizeof *nev);
+			if (!nsp || !nev) abort();
+			memcpy(nsp, sc->sp, sc->n * sizeof *nsp);
+			if (sc->sp != sc->stack_spans) {
+				free(sc->sp);
+				free(sc->ev);
+			}
+			sc->sp = nsp;
+			sc->ev = nev;
+			sc->cap = ncap;
+		}
+		s.el = c->first + k;
+		sc->sp[sc->n++] = s;
+	}
+}
+
 /* Report the crossings in (tmin, tmax) in increasing t to take, which
  * returns whether to go on. */
 static void blob_hits(const struct object *o, const struct ray *r, double tmin, double tmax, root_sink take,
@@ -328,50 +587,42 @@ static void blob_hits(const struct object *o, const struct ray *r, double tmin, 
 	}
 	if (!(t0 <= t1) || t1 < tmin || t0 > tmax)
 		return;
-	vec3 so = v3_madd(org, d, t0); /* the shifted origin; tau = t - t0 */
-	struct span stack_spans[STACK_SPANS];
-	struct event stack_ev[2 * STACK_SPANS];
-	struct span *sp = stack_spans;
-	struct event *ev = stack_ev;
-	size_t cap = STACK_SPANS, n = 0;
-	for (size_t i = 0; i < B->nel; i++) {
-		const struct elem *e = &B->el[i];
-		if (!hits_sphere(e, org, d, dd))
-			continue;
-		const struct comp *c = &B->comp[e->comp];
-		vec3 lo_o = so, lo_d = d;
-		if (c->has_xf) {
-			lo_o = mat_point(&c->xf.inv, so);
-			lo_d = mat_dir(&c->xf.inv, d);
-		}
-		struct span s;
-		if (!elem_span(e, lo_o, lo_d, s.q, &s.lo, &s.hi))
-			continue;
-		if (n == cap) {
-			/* Rare: more active elements along one ray than the stack
-			 * holds. */
-			size_t ncap = cap * 2;
-			struct span *nsp = malloc(ncap * sizeof *nsp);
-			struct event *nev = malloc(2 * ncap * sizeof *nev);
-			if (!nsp || !nev) abort();
-			memcpy(nsp, sp, n * sizeof *sp);
-			if (sp != stack_spans) {
-				free(sp);
-				free(ev);
-			}
-			sp = nsp;
-			ev = nev;
-			cap = ncap;
-		}
-		s.el = (int)i;
-		sp[n++] = s;
-	}
+	/* Set field by field: zeroing the stack arrays would cost more than
+	 * the search (11 KB a ray). */
+	struct span_ctx sc;
+	sc.B = B;
+	sc.org = org;
+	sc.d = d;
+	sc.dd = dd;
+	sc.so = v3_madd(org, d, t0);
+	sc.n = 0;
+	sc.cap = STACK_SPANS;
+	sc.sp = sc.stack_spans;
+	sc.ev = sc.stack_ev;
+	each_on_ray(B, org, d, add_spans, &sc);
+	struct span *sp = sc.sp;
+	struct event *ev = sc.ev;
+	size_t n = sc.n;
 	size_t ne = 0;
 	for (size_t i = 0; i < n; i++) {
 		ev[ne++] = (struct event){sp[i].lo, (int)i, 1};
 		ev[ne++] = (struct event){sp[i].hi, (int)i, 0};
 	}
-	qsort(ev, ne, sizeof *ev, event_cmp);
+	if (ne <= 64) {
+		/* Few events (the usual case): insertion sort, no call per
+		 * comparison. */
+		for (size_t k = 1; k < ne; k++) {
+			struct event x = ev[k];
+			size_t m = k;
+			while (m > 0 && event_cmp(&ev[m - 1], &x) > 0) {
+				ev[m] = ev[m - 1];
+				m--;
+			}
+			ev[m] = x;
+		}
+	} else {
+		qsort(ev, ne, sizeof *ev, event_cmp);
+	}
 	double p[5] = {0, 0, 0, 0, 0};
 	int active = 0;
 	double taumin = tmin - t0, taumax = tmax - t0;
@@ -409,7 +660,7 @@ static void blob_hits(const struct object *o, const struct ray *r, double tmin, 
 		}
 	}
 done:
-	if (sp != stack_spans) {
+	if (sp != sc.stack_spans) {
 		free(sp);
 		free(ev);
 	}
@@ -526,14 +777,29 @@ static bool near_comp(const struct blob *B, const struct comp *c, vec3 p)
 	return false;
 }
 
+/* Sums of the fields at one point (blob_density, the normal, the
+ * texture blend). */
+struct field_ctx {
+	const struct blob *B;
+	vec3 p;
+	double f;
+	vec3 grad;
+	bool want_grad;
+};
+
+static void add_field(void *ctx, int ci)
+{
+	struct field_ctx *fc = ctx;
+	const struct comp *c = &fc->B->comp[ci];
+	if (near_comp(fc->B, c, fc->p))
+		fc->f += comp_field(fc->B, c, fc->p, fc->want_grad ? &fc->grad : NULL);
+}
+
 double blob_density(const struct object *o, vec3 p)
 {
-	const struct blob *B = blob_of(o);
-	double f = 0;
-	for (size_t i = 0; i < B->ncomp; i++)
-		if (near_comp(B, &B->comp[i], p))
-			f += comp_field(B, &B->comp[i], p, NULL);
-	return f;
+	struct field_ctx fc = {.B = blob_of(o), .p = p};
+	each_at_point(fc.B, p, add_field, &fc);
+	return fc.f;
 }
 
 static bool blob_inside(const struct object *o, vec3 p)
@@ -544,13 +810,10 @@ static bool blob_inside(const struct object *o, vec3 p)
 /* The outward normal: minus the field's gradient. */
 static vec3 blob_normal(const struct object *o, vec3 p, const struct hit *h)
 {
-	const struct blob *B = blob_of(o);
 	(void)h;
-	vec3 g = v3(0, 0, 0);
-	for (size_t i = 0; i < B->ncomp; i++)
-		if (near_comp(B, &B->comp[i], p))
-			comp_field(B, &B->comp[i], p, &g);
-	vec3 n = v3_neg(g);
+	struct field_ctx fc = {.B = blob_of(o), .p = p, .want_grad = true};
+	each_at_point(fc.B, p, add_field, &fc);
+	vec3 n = v3_neg(fc.grad);
 	if (n.x == 0 && n.y == 0 && n.z == 0)
 		return v3(0, 1, 0);
 	return n;
@@ -564,41 +827,50 @@ static struct aabb blob_bounds(const struct object *o)
 /* The component textures at p, weighted by the components' fields there
  * (those of positive field; one without a texture of its own shows the
  * blob's). */
+struct blend_ctx {
+	const struct object *o;
+	vec3 p;
+	const struct texture **tex;
+	double *w, sum;
+	int n, max;
+};
+
+static void add_blend(void *ctx, int ci)
+{
+	struct blend_ctx *bc = ctx;
+	const struct blob *B = blob_of(bc->o);
+	const struct comp *c = &B->comp[ci];
+	if (!near_comp(B, c, bc->p))
+		return;
+	double f = comp_field(B, c, bc->p, NULL);
+	if (!(f > 0))
+		return;
+	const struct texture *t = B->tex[ci] ? B->tex[ci] : bc->o->tex;
+	int j = 0;
+	while (j < bc->n && bc->tex[j] != t)
+		j++;
+	if (j == bc->n) {
+		if (bc->n == bc->max)
+			return;
+		bc->tex[bc->n] = t;
+		bc->w[bc->n++] = 0;
+	}
+	bc->w[j] += f;
+	bc->sum += f;
+}
+
 static int blob_texture_blend(const struct object *o, vec3 p, const struct texture **tex, double *w, int max)
 {
 	const struct blob *B = blob_of(o);
-	bool any = false;
-	for (size_t i = 0; i < B->ncomp && !any; i++)
-		any = B->tex[i] != NULL;
-	if (!any)
+	if (!B->any_tex)
 		return 0;
-	int n = 0;
-	double sum = 0;
-	for (size_t i = 0; i < B->ncomp; i++) {
-		const struct comp *c = &B->comp[i];
-		if (!near_comp(B, c, p))
-			continue;
-		double f = comp_field(B, c, p, NULL);
-		if (!(f > 0))
-			continue;
-		const struct texture *t = B->tex[i] ? B->tex[i] : o->tex;
-		int j = 0;
-		while (j < n && tex[j] != t)
-			j++;
-		if (j == n) {
-			if (n == max)
-				continue;
-			tex[n] = t;
-			w[n++] = 0;
-		}
-		w[j] += f;
-		sum += f;
-	}
-	if (n == 0 || !(sum > 0))
+	struct blend_ctx bc = {.o = o, .p = p, .tex = tex, .w = w, .max = max};
+	each_at_point(B, p, add_blend, &bc);
+	if (bc.n == 0 || !(bc.sum > 0))
 		return 0;
-	for (int j = 0; j < n; j++)
-		w[j] /= sum;
-	return n;
+	for (int j = 0; j < bc.n; j++)
+		w[j] /= bc.sum;
+	return bc.n;
 }
 
 static size_t blob_textures(const struct object *o, struct texture *const **tex)
@@ -633,6 +905,8 @@ static struct object *blob_copy(const struct object *o)
 	for (size_t i = 0; i < c->ncomp; i++)
 		if (c->tex[i])
 			texture_ref(c->tex[i]);
+	c->node = NULL; /* rebuilt by the copy's prepare */
+	c->order = NULL;
 	return &c->base;
 }
 
@@ -643,6 +917,7 @@ static void blob_destroy(struct object *o)
 		texture_unref(B->tex[i]);
 	free(B->comp);
 	free(B->tex);
+	drop_tree(B);
 	free(B->el);
 }
 
@@ -694,6 +969,7 @@ static int add_comp(struct blob *B, struct comp c)
 	B->tex[B->ncomp] = NULL;
 	refresh(B, B->ncomp);
 	grow_box(B, (size_t)c.first);
+	drop_tree(B);
 	return (int)B->ncomp++;
 }
 
@@ -727,6 +1003,7 @@ void blob_transform_component(struct object *o, int i, const struct xform *t, bo
 		B->tex[i] = texture_transform(B->tex[i], t);
 	refresh(B, (size_t)i);
 	B->box_stale = true;
+	drop_tree(B);
 }
 
 struct texture **blob_component_texture(struct object *o, int i)

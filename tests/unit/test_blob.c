@@ -213,6 +213,56 @@ static void test_bounds(void **state)
 	object_free(o);
 }
 
+/* hierarchy on and off find the same crossings, normals and fields
+ * (the tree only skips components far from the ray or the point). */
+static void test_hierarchy(void **state)
+{
+	(void)state;
+	struct object *o[2];
+	for (int h = 0; h < 2; h++) {
+		o[h] = blob_new(nopos);
+		blob_set_threshold(o[h], 0.5);
+		unsigned seed = 12345;
+		for (int i = 0; i < 60; i++) {
+			double v[7];
+			for (int k = 0; k < 7; k++) {
+				seed = seed * 1103515245u + 12345u;
+				v[k] = (seed >> 8 & 0xffff) / 65536.0;
+			}
+			if (i % 3 == 0)
+				blob_add_cylinder(o[h], v3(4 * v[0] - 2, 4 * v[1] - 2, 4 * v[2] - 2),
+				                  v3(4 * v[3] - 2, 4 * v[4] - 2, 4 * v[5] - 2), 0.3 + 0.4 * v[6], 1);
+			else
+				blob_add_sphere(o[h], v3(4 * v[0] - 2, 4 * v[1] - 2, 4 * v[2] - 2), 0.3 + 0.5 * v[6],
+				                i % 7 == 0 ? -0.5 : 1);
+		}
+		blob_set_hierarchy(o[h], h == 0);
+		object_prepare(o[h]);
+	}
+	int hits_found = 0;
+	for (int k = 0; k < 200; k++) {
+		vec3 org = v3(5 * cos(k * 0.31), 3 * sin(k * 0.17), 5 * sin(k * 0.31));
+		vec3 dir = v3_add(v3_neg(org), v3(sin(k), cos(k * 1.3), 0.5 * sin(k * 0.7)));
+		struct hit a[16], b[16];
+		struct ray r = mkray(org, dir);
+		int na = o[0]->ops->all_hits(o[0], &r, 0, INFINITY, a, 16);
+		int nb = o[1]->ops->all_hits(o[1], &r, 0, INFINITY, b, 16);
+		assert_int_equal(na, nb);
+		for (int i = 0; i < na; i++) {
+			assert_near(a[i].t, b[i].t, 1e-12);
+			vec3 p = v3_madd(org, dir, a[i].t);
+			vec3 na_ = v3_norm(o[0]->ops->normal(o[0], p, &a[i]));
+			vec3 nb_ = v3_norm(o[1]->ops->normal(o[1], p, &b[i]));
+			assert_vec_near(na_, nb_.x, nb_.y, nb_.z, 1e-12);
+			assert_near(blob_density(o[0], p), blob_density(o[1], p), 1e-12);
+		}
+		hits_found += na;
+	}
+	assert_true(hits_found > 100);
+	object_free(o[0]);
+	object_free(o[1]);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -220,6 +270,7 @@ int main(void)
 		cmocka_unit_test(test_manual),
 		cmocka_unit_test(test_components),
 		cmocka_unit_test(test_bounds),
+		cmocka_unit_test(test_hierarchy),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
