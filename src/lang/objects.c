@@ -719,7 +719,7 @@ bool parse_is_object_start(enum kw k)
 	case KW_LIGHT_GROUP:
 		return true;
 	default:
-		return parse_is_object2(k);
+		return parse_is_object2(k) || parse_is_object3(k);
 	}
 }
 
@@ -814,6 +814,8 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 	const struct token *tk = parse_peek(p);
 	if (tk->kind != TOK_KEYWORD)
 		return false;
+	if (s->args && parse_object3_modifier(p, o, s->args->kw))
+		return true;
 	struct srcpos at = tk->pos;
 	switch (tk->kw) {
 	case KW_TEXTURE: parse_texture_layer(p, &o->tex); return true;
@@ -980,6 +982,13 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		args.kw = k;
 		s.args = &args;
 		s.o = parse_object2(p, k, at);
+		break;
+	case KW_BLOB:
+	case KW_HEIGHT_FIELD:
+		memset(&args, 0, sizeof args);
+		args.kw = k;
+		s.args = &args;
+		s.o = parse_object3(p, k, at);
 		break;
 	case KW_TEXT: s.o = parse_text(p, at); break;
 	case KW_MESH:

@@ -452,6 +452,13 @@ struct object *parse_object(struct parser *p, bool scene_level);
 bool parse_is_object2(enum kw k);
 struct object *parse_object2(struct parser *p, enum kw k, struct srcpos at);
 bool parse_object2_flag(struct object *o, enum kw k, bool is_open, bool on);
+/* blob, height_field and sphere_sweep (objects3.c): is k one of them; the
+ * statement's arguments after its '{' (the caller owns the result); and
+ * one of the object's own modifiers at the current token (sturm,
+ * hierarchy...), read into o (false, nothing read, if there is none). */
+bool parse_is_object3(enum kw k);
+struct object *parse_object3(struct parser *p, enum kw k, struct srcpos at);
+bool parse_object3_modifier(struct parser *p, struct object *o, enum kw k);
 /* A transformation (translate, rotate, scale, matrix, transform) at the
  * current token into *out; false if there is none. */
 bool parse_transform_item(struct parser *p, struct xform *out);

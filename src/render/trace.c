@@ -286,6 +286,17 @@ static rgb surface_filter(const struct texture *t, const struct surface *s)
 	return f;
 }
 
+/* The textures an object blends at the world point pt (object.h's
+ * texture_blend), with their weights; 0 if it has none there. */
+enum { TEXTURE_BLEND_MAX = 32 };
+static int texture_blend_at(const struct object *o, vec3 pt, const struct texture **tex, double *w)
+{
+	if (!o->ops->texture_blend)
+		return 0;
+	vec3 q = o->has_xf ? mat_point(&o->xf.inv, pt) : pt;
+	return o->ops->texture_blend(o, q, tex, w, TEXTURE_BLEND_MAX);
+}
+
 /* Fill the pattern contexts of s for a hit h on s->obj; gs gives the
  * noise generator of patterns without their own and the number of waves. */
 static void surface_contexts(struct surface *s, const struct hit *h, bool uv_wanted, const struct global_settings *gs)
@@ -329,7 +340,14 @@ static rgb light_through(struct tracer *tr, size_t slot, rgb lc, vec3 pt, vec3 l
 		s.n = object_normal(h.obj, s.pt, &h);
 		surface_contexts(&s, &h, (p->features & FEAT_UV) != 0, &p->scene->gs);
 		const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
-		rgb f = surface_filter(tex ? tex : h.obj->tex, &s);
+		const struct texture *bt[TEXTURE_BLEND_MAX];
+		double bw[TEXTURE_BLEND_MAX];
+		int nb = texture_blend_at(h.obj, s.pt, bt, bw);
+		rgb f = rgb_make(0, 0, 0);
+		for (int i = 0; i < nb; i++)
+			f = rgb_add(f, rgb_scale(surface_filter(bt[i] ? bt[i] : h.obj->tex, &s), bw[i]));
+		if (nb == 0)
+			f = surface_filter(tex ? tex : h.obj->tex, &s);
 		lc = rgb_mul(lc, f);
 		if (rgb_max(lc) <= 0)
 			return rgb_make(0, 0, 0);
@@ -858,7 +876,19 @@ static rgb trace_see(struct tracer *tr, const struct ray *r, int depth, enum ray
 		s.leaving = medium_has(med, s.in);
 	surface_contexts(&s, &h, (p->features & FEAT_UV) != 0, &p->scene->gs);
 	const struct texture *tex = h.obj->ops->texture_at ? h.obj->ops->texture_at(h.obj, &h) : NULL;
-	rgb col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
+	const struct texture *bt[TEXTURE_BLEND_MAX];
+	double bw[TEXTURE_BLEND_MAX];
+	int nb = texture_blend_at(h.obj, s.pt, bt, bw);
+	rgb col = rgb_make(0, 0, 0);
+	double transmit = 0;
+	for (int i = 0; i < nb; i++) {
+		col = rgb_add(col, rgb_scale(shade_texture(tr, bt[i] ? bt[i] : h.obj->tex, &s, weight * bw[i]), bw[i]));
+		transmit += tr->transmit * bw[i];
+	}
+	if (nb > 0)
+		tr->transmit = transmit;
+	else
+		col = shade_texture(tr, tex ? tex : h.obj->tex, &s, weight);
 	if (p->features & (FEAT_FOG | FEAT_RAINBOW)) {
 		double len = v3_len(r->dir);
 		struct rgbft c = {col.r, col.g, col.b, 0, tr->transmit};

@@ -47,6 +47,8 @@ void object_transform_textures(struct object *o, const struct xform *t)
 {
 	if (o->tex)
 		o->tex = texture_transform(o->tex, t);
+	if (o->ops->transform_textures)
+		o->ops->transform_textures(o, t);
 	struct object **kids;
 	if (o->ops->children) {
 		size_t n = o->ops->children(o, &kids);

@@ -59,6 +59,14 @@ struct object_ops {
 	/* The texture at hit h when the primitive has several (mesh triangles);
 	 * NULL: the object's own. Returns NULL to mean the object's own. */
 	struct texture *(*texture_at)(const struct object *o, const struct hit *h);
+	/* Several textures blended at the object-space point p (a blob's
+	 * component textures, weighted by their fields): up to max textures
+	 * (NULL: the object's own) and weights summing to 1; returns how many,
+	 * 0 meaning texture_at or the object's own. May be NULL. */
+	int (*texture_blend)(const struct object *o, vec3 p, const struct texture **tex, double *w, int max);
+	/* Apply t to the textures the primitive carries besides the object's
+	 * own (object_transform_textures calls it); may be NULL. */
+	void (*transform_textures)(struct object *o, const struct xform *t);
 	/* The textures the primitive carries besides the object's own (a
 	 * mesh's triangle textures), for prepare's feature analysis; may be
 	 * NULL (none). */
