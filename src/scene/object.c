@@ -245,9 +245,13 @@ struct aabb object_world_bounds_raw(const struct object *o, bool invert)
 	struct aabb b = inf_box;
 	bool inverse = ((o->flags & OBJ_INVERSE) != 0) != invert;
 	if (!inverse || o->ops->inverse_bounds) {
-		b = inverse ? o->ops->inverse_bounds(o) : o->ops->bounds(o);
-		if (o->has_xf)
-			b = box_transform(&o->xf.fwd, b);
+		if (!inverse && o->ops->world_bounds)
+			b = o->ops->world_bounds(o);
+		else {
+			b = inverse ? o->ops->inverse_bounds(o) : o->ops->bounds(o);
+			if (o->has_xf)
+				b = box_transform(&o->xf.fwd, b);
+		}
 	}
 	/* POV-Ray keeps the smallest by volume of the object's own box and
 	 * the boxes of its clip and its bound (it does not cut one with the

@@ -66,11 +66,16 @@ struct object_ops {
 	/* CSG only (NULL elsewhere): the children, for operations that walk
 	 * the tree (transforms, textures, flags, prepare). */
 	size_t (*children)(struct object *o, struct object ***kids);
-	/* CSG only (may be NULL): object_transform calls it with t before the
-	 * children move. POV-Ray keeps a CSG's box from before its first
-	 * transform and moves that box (a rotated cube of planes stays
-	 * bounded). */
+	/* May be NULL: object_transform calls it with t before the object (a
+	 * CSG: its children) moves. POV-Ray keeps a CSG's box from before its
+	 * first transform and moves that box (a rotated cube of planes stays
+	 * bounded); a sphere notes whether t keeps its box exact. */
 	void (*transform_bounds)(struct object *o, const struct xform *t);
+	/* May be NULL (then: bounds moved by xf): the world-space bounds, for
+	 * a primitive whose box POV-Ray keeps better than its object-space
+	 * box moved by the transform (a sphere only translated, rotated and
+	 * scaled by equal factors). */
+	struct aabb (*world_bounds)(const struct object *o);
 	/* Build what the object needs before rendering (CSG: its own BVH),
 	 * after its children have been prepared; may be NULL. */
 	void (*prepare)(struct object *o);
