@@ -294,8 +294,18 @@ struct prepared *prepare_scene(struct scene *s)
 	}
 	texture_unref(plain);
 	p->bvh = bvh_build(bounded.v, bounded.n);
-	if (s->atmos.nfogs || s->atmos.nrainbows)
-		p->atmos = atmos_prepare(bounded.v, bounded.n, unbounded.v, unbounded.n);
+	if (s->atmos.nfogs || s->atmos.nrainbows) {
+		/* Fog's inside tests cull by bounds: a loose object (one whose
+		 * inside reaches beyond its box) goes with the unbounded ones. */
+		struct objlist tight = {0}, wide = {0};
+		for (size_t i = 0; i < bounded.n; i++)
+			objlist_push(bounded.v[i]->loose ? &wide : &tight, bounded.v[i]);
+		for (size_t i = 0; i < unbounded.n; i++)
+			objlist_push(&wide, unbounded.v[i]);
+		p->atmos = atmos_prepare(tight.v, tight.n, wide.v, wide.n);
+		free(tight.v);
+		free(wide.v);
+	}
 	free(bounded.v);
 	p->unbounded = (const struct object **)unbounded.v;
 	p->nunbounded = unbounded.n;
