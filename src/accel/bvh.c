@@ -252,6 +252,11 @@ bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double
 				const struct object *o = b->objs[i];
 				if (o->flags & skip)
 					continue;
+				/* A loose object may have surface outside its box; POV-Ray
+				 * skips an object whose box the ray misses, so that surface
+				 * is not seen (see csg.c's culled). */
+				if (o->loose && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
+					continue;
 				struct hit th;
 				if (object_intersect(o, r, tmin, tmax, &th)) {
 					*h = th;
@@ -298,6 +303,8 @@ bool bvh_occluded(const struct bvh *b, const struct ray *r, double tmin, double 
 			for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
 				const struct object *o = b->objs[i];
 				if (o->flags & skip)
+					continue;
+				if (o->loose && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
 					continue;
 				if (object_intersect(o, r, tmin, tmax, &h)) {
 					*blocker = o;

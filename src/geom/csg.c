@@ -69,7 +69,9 @@ static void group_build(struct group *g)
 	if (!fin || !g->unb) abort();
 	size_t nf = 0;
 	for (size_t i = 0; i < g->n; i++) {
-		if (aabb_is_finite(g->kids[i]->bounds))
+		/* A loose child's inside reaches beyond its box: the hierarchy's
+		 * inside test would miss it. */
+		if (aabb_is_finite(g->kids[i]->bounds) && !g->kids[i]->loose)
 			fin[nf++] = g->kids[i];
 		else
 			g->unb[g->nunb++] = g->kids[i];
@@ -78,10 +80,25 @@ static void group_build(struct group *g)
 	free(fin);
 }
 
+/* Does POV-Ray skip child k for a ray that misses k's box? It does for
+ * the parts of a union, merge or intersection and the first part of a
+ * difference, not for inverse or subtracted ones (measured with trace()
+ * on an intersection { box { -2, 2 } union { sphere { 0, 1 inverse }
+ * sphere { 3*x, 1 } } }, whose box, <-1,-1,-1> to <2,1,1>, cuts off
+ * some of its surface: as a part of a union that surface is not found,
+ * as a subtracted part it is). Only loose children can have surface
+ * outside their box, so only they are tested here; the others are culled
+ * by the group's hierarchy or not at all. */
+static bool culled(const struct object *k, const struct ray *r, double tmin, double tmax)
+{
+	return k->loose && !(k->flags & OBJ_INVERSE) && !object_ray_meets_box(k->bounds, r, tmin, tmax);
+}
+
 /* Closest hit among the group's children in (tmin, tmax); *top is the
- * child that holds it. */
+ * child that holds it. `cull`: skip loose children whose box the ray
+ * misses (see culled). */
 static bool group_closest(const struct group *g, const struct ray *r, double tmin, double tmax, struct hit *h,
-                          const struct object **top)
+                          const struct object **top, bool cull)
 {
 	bool found = false;
 	struct object *const *list = g->kids;
@@ -95,6 +112,8 @@ static bool group_closest(const struct group *g, const struct ray *r, double tmi
 	}
 	for (size_t i = 0; i < n; i++) {
 		struct hit th;
+		if (cull && culled(list[i], r, tmin, tmax))
+			continue;
 		if (object_intersect(list[i], r, tmin, tmax, &th)) {
 			*h = th;
 			tmax = th.t;
@@ -136,6 +155,8 @@ static bool inside_all(const struct csg *c, vec3 p, const struct object *exclude
 static bool walk_child(const struct csg *c, const struct object *k, const struct ray *r, double tmin, double tmax,
                        struct hit *h, bool (*keep)(const struct csg *, const struct object *, vec3))
 {
+	if (culled(k, r, tmin, tmax))
+		return false;
 	for (int i = 0; i < WALK_MAX; i++) {
 		if (!object_intersect(k, r, tmin, tmax, h))
 			return false;
@@ -152,7 +173,7 @@ static bool walk_group(const struct csg *c, const struct ray *r, double tmin, do
 {
 	for (int i = 0; i < WALK_MAX; i++) {
 		const struct object *top = NULL;
-		if (!group_closest(&c->g, r, tmin, tmax, h, &top))
+		if (!group_closest(&c->g, r, tmin, tmax, h, &top, c->kind != CSG_DIFFERENCE))
 			return false;
 		if (keep(c, top, v3_madd(r->org, r->dir, h->t)))
 			return true;
@@ -193,7 +214,7 @@ static bool csg_intersect(const struct object *o, const struct ray *r, double tm
 	const struct object *top;
 	switch (c->as_merge ? CSG_MERGE : c->kind) {
 	case CSG_UNION:
-		return group_closest(&c->g, r, tmin, tmax, h, &top);
+		return group_closest(&c->g, r, tmin, tmax, h, &top, true);
 	case CSG_MERGE:
 		return walk_group(c, r, tmin, tmax, h, keep_merge);
 	case CSG_INTERSECTION: {
@@ -327,9 +348,23 @@ static void set_group(struct csg *c)
 	c->g.n = c->n > first ? c->n - first : 0;
 }
 
+/* Is the inside of a CSG of kind k with child i loose? The box of a union
+ * covers its parts' boxes; an intersection's and a difference's cover only
+ * the parts that are not inverted (inverse ones are left out, or give
+ * their exact half-space), so only those parts count there. */
+static bool child_loosens(enum csg_kind k, size_t i, const struct object *kid)
+{
+	if (k == CSG_UNION || k == CSG_MERGE)
+		return kid->loose;
+	bool inverted = ((kid->flags & OBJ_INVERSE) != 0) != (k == CSG_DIFFERENCE && i > 0);
+	return kid->loose && !inverted;
+}
+
 static void csg_prepare(struct object *o)
 {
 	struct csg *c = (struct csg *)o;
+	for (size_t i = 0; i < c->n; i++)
+		o->loose = o->loose || child_loosens(c->kind, i, c->kids[i]);
 	set_group(c);
 	if (c->kind != CSG_INTERSECTION)
 		group_build(&c->g);

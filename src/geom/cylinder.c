@@ -199,22 +199,65 @@ static vec3 cone_normal(const struct object *o, vec3 p, const struct hit *h)
 
 /* The box around the two end discs: a disc of radius r around the unit
  * axis w reaches r sqrt(1 - w_i^2) along axis i. */
+static const struct object_ops cone_ops;
+
+/* POV-Ray's box, measured with min_extent/max_extent (cylinder { 0,
+ * <1,2.5,1>, 1 } gives x in [-1.278929, 2.278929], where the exact box
+ * has [-0.937, 1.937]): the box of the corners of [-R,R]^2 x [0,len], R
+ * the larger radius, carried to the axis by the rotation that takes z to
+ * minus the axis w (about z x -w; the identity for w = z), which gives
+ * x' = (1 - wx^2/(1-wz), -wx wy/(1-wz), wx) and
+ * y' = (-wx wy/(1-wz), 1 - wy^2/(1-wz), wy), and then by the object's
+ * transform as one matrix (not the box moved: cylinder { <1,0.5,0>,
+ * <2,3,1>, 0.5 rotate <20,30,40> } gives x in [-0.190467, 1.104903]).
+ * This is that whole map, from [-1,1]^2 x [0,1]. POV-Ray builds the
+ * rotation with sines and cosines, so a side that should be 0 can be
+ * -6e-17 there (cylinder { y, 0, 1 }: min_extent's y prints -0.000000);
+ * lucent's is exact. A cone's axis runs from the end with the larger
+ * radius to the other, and R is that radius, signs counted (cone { <1,
+ * 0.5,0>, 0.5, <0,1,1>, 1.5 }: x in [-1.3, 2.3], where w from base to cap
+ * would give [-1.5, 2.5]; cone { 0, -1, x+y, 0.5 }: x in [-0.5, 1.5]). */
+static mat4 canonical_frame(const struct cone *c)
+{
+	double r = fmax(c->r0, c->r1);
+	vec3 w = c->w, org = c->org, xa = v3(1, 0, 0), ya = v3(0, 1, 0);
+	if (c->base.ops == &cone_ops && c->r0 < c->r1) {
+		org = v3_madd(c->org, w, c->len);
+		w = v3_neg(w);
+	}
+	double q = 1 - w.z;
+	if (q > 0) {
+		xa = v3(1 - w.x * w.x / q, -w.x * w.y / q, w.x);
+		ya = v3(-w.x * w.y / q, 1 - w.y * w.y / q, w.y);
+	}
+	mat4 f = mat_identity();
+	vec3 col[4] = {v3_scale(xa, r), v3_scale(ya, r), v3_scale(w, c->len), org};
+	for (int j = 0; j < 4; j++) {
+		f.m[0][j] = col[j].x;
+		f.m[1][j] = col[j].y;
+		f.m[2][j] = col[j].z;
+	}
+	return f;
+}
+
+static const struct aabb canonical_box = {{-1, -1, 0}, {1, 1, 1}};
+
 static struct aabb cone_bounds(const struct object *o)
 {
 	const struct cone *c = (const struct cone *)o;
-	struct aabb b = {c->org, c->org};
 	if (c->len == 0)
-		return b;
-	vec3 cap = v3_madd(c->org, c->w, c->len);
-	for (int e = 0; e < 2; e++) {
-		double r = fabs(e ? c->r1 : c->r0);
-		vec3 ctr = e ? cap : c->org;
-		vec3 ext = v3(r * sqrt(fmax(0, 1 - c->w.x * c->w.x)), r * sqrt(fmax(0, 1 - c->w.y * c->w.y)),
-		              r * sqrt(fmax(0, 1 - c->w.z * c->w.z)));
-		b = aabb_add_point(b, v3_sub(ctr, ext));
-		b = aabb_add_point(b, v3_add(ctr, ext));
-	}
-	return b;
+		return (struct aabb){c->org, c->org};
+	mat4 f = canonical_frame(c);
+	return mat_bounds(&f, canonical_box);
+}
+
+static struct aabb cone_world_bounds(const struct object *o)
+{
+	const struct cone *c = (const struct cone *)o;
+	if (!o->has_xf || c->len == 0)
+		return o->has_xf ? mat_bounds(&o->xf.fwd, cone_bounds(o)) : cone_bounds(o);
+	mat4 f = canonical_frame(c), m = mat_mul(&o->xf.fwd, &f);
+	return mat_bounds(&m, canonical_box);
 }
 
 static struct object *cone_copy(const struct object *o)
@@ -232,6 +275,7 @@ static const struct object_ops cone_ops = {
 	.inside = cone_inside,
 	.normal = cone_normal,
 	.bounds = cone_bounds,
+	.world_bounds = cone_world_bounds,
 	.copy = cone_copy,
 };
 
@@ -242,6 +286,7 @@ static const struct object_ops cylinder_ops = {
 	.inside = cone_inside,
 	.normal = cone_normal,
 	.bounds = cone_bounds,
+	.world_bounds = cone_world_bounds,
 	.copy = cone_copy,
 };
 

@@ -7,6 +7,9 @@ struct sphere {
 	struct object base;
 	vec3 center;
 	double radius, r2;
+	bool exact;        /* every transform so far was `simple` (see exact_box) */
+	struct aabb box0;  /* !exact: the world box when the first other transform came */
+	mat4 inv0;         /* !exact: the inverse transform at that moment */
 };
 
 /* Both crossings of the ray with the sphere, or 0. The discriminant is
@@ -89,6 +92,46 @@ static struct aabb sphere_bounds(const struct object *o)
 	return b;
 }
 
+/* POV-Ray moves a sphere's centre and radius for each translate, rotate
+ * and scale by equal factors until the first other transform (a scale by
+ * unequal factors, a matrix, a transform block or identifier); from then
+ * on it keeps a transform, and its box is the box it had at that moment
+ * moved by the transforms since (measured with min_extent/max_extent:
+ * sphere { <1,0,0>, 1 rotate 45*y } gives x in [-0.292893, 1.707107];
+ * with `transform { rotate 45*y }` instead, [-0.707107, 2.121320]; and
+ * `rotate 45*y scale <1,2,3>` gives z in [-5.121321, 0.878679]). */
+static struct aabb exact_box(const struct sphere *s)
+{
+	const struct object *o = &s->base;
+	if (!o->has_xf)
+		return sphere_bounds(o);
+	const mat4 *m = &o->xf.fwd;
+	/* A simple transform scales every direction by the same factor. */
+	double k = s->radius * sqrt(m->m[0][0] * m->m[0][0] + m->m[1][0] * m->m[1][0] + m->m[2][0] * m->m[2][0]);
+	vec3 c = mat_point(m, s->center), r = v3(k, k, k);
+	struct aabb b = {v3_sub(c, r), v3_add(c, r)};
+	return b;
+}
+
+static void sphere_transform_bounds(struct object *o, const struct xform *t)
+{
+	struct sphere *s = (struct sphere *)o;
+	if (s->exact && !t->simple) {
+		s->box0 = exact_box(s);
+		s->inv0 = o->xf.inv;
+		s->exact = false;
+	}
+}
+
+static struct aabb sphere_world_bounds(const struct object *o)
+{
+	const struct sphere *s = (const struct sphere *)o;
+	if (s->exact)
+		return exact_box(s);
+	mat4 since = mat_mul(&o->xf.fwd, &s->inv0); /* the transforms after box0 was taken */
+	return mat_bounds(&since, s->box0);
+}
+
 /* POV-Ray's spherical uv (measured against POV-Ray 3.7 renders): with d
  * the point relative to the centre, u = atan2(d.z, d.x) / 2pi taken into
  * [0,1) -- 0 on the +x side, rising through +z (0.25), -x (0.5) and -z
@@ -127,6 +170,8 @@ static const struct object_ops sphere_ops = {
 	.inside = sphere_inside,
 	.normal = sphere_normal,
 	.bounds = sphere_bounds,
+	.transform_bounds = sphere_transform_bounds,
+	.world_bounds = sphere_world_bounds,
 	.uv = sphere_uv,
 	.copy = sphere_copy,
 };
@@ -140,5 +185,6 @@ struct object *sphere_new(vec3 center, double radius, struct srcpos pos)
 	s->center = center;
 	s->radius = fabs(radius);
 	s->r2 = radius * radius;
+	s->exact = true;
 	return &s->base;
 }

@@ -183,45 +183,6 @@ static double f_rand(struct parser *p, double stream, struct srcpos at)
 
 /* ---- geometry queries ---- */
 
-/* The box min_extent and max_extent report: POV-Ray's, which differs from
- * the bounds lucent renders with only where an inversion is involved.
- * POV-Ray keeps an inverse object's box as it was (measured: `sphere { 0,
- * 1 inverse }` gives +-1, `cylinder { 0, y, 2 inverse }` <-2,0,-2> to
- * <2,1,2>), and a union or merge reports the union of its parts' boxes,
- * an inverse part's included (`union { sphere { 0, 1 inverse } sphere {
- * 3*x, 1 } }`: <-1,-1,-1> to <4,1,1>); an intersection leaves its
- * inverse parts out, as lucent's bounds do, so one made only of them is
- * infinite. lucent renders with an infinite box for those, which the
- * hierarchy needs; the box reported here is computed from the same
- * boxes, and a union's from its parts' as they are now (for a union
- * rotated after it was made, POV-Ray moves the union's box instead, which
- * can be larger). Unbounded: the infinite box. */
-static struct aabb extent_box(const struct object *o, int depth)
-{
-	struct aabb b;
-	if (o->flags & OBJ_INVERSE) {
-		/* The bounds of o as if it were not inverted. */
-		b = object_world_bounds_raw(o, true);
-		if (aabb_is_finite(b) && b.lo.x <= b.hi.x && b.lo.y <= b.hi.y && b.lo.z <= b.hi.z)
-			return b;
-	}
-	b = object_world_bounds(o);
-	if (aabb_is_finite(b) || depth > 64)
-		return b;
-	enum csg_kind kind;
-	struct object **kids;
-	if (csg_kind_of(o, &kind) && (kind == CSG_UNION || kind == CSG_MERGE) && !o->clip && !o->bound) {
-		size_t n = o->ops->children((struct object *)o, &kids);
-		b = aabb_empty();
-		for (size_t i = 0; i < n; i++)
-			b = aabb_union(b, extent_box(kids[i], depth + 1));
-		if (n > 0 && aabb_is_finite(b))
-			return b;
-	}
-	return object_world_bounds(o);
-}
-
-
 /* The integer a bitwise function works on: POV-Ray's 32-bit int, with any
  * value outside its range (and NaN) becoming the smallest int (measured:
  * bitwise_or(3e9, 1) is -2147483647, bitwise_and(2.9e39, 7) is 0). */
@@ -251,7 +212,11 @@ static struct value f_trace(struct parser *p, struct srcpos at)
 	struct ray r = {from, dir};
 	struct hit h;
 	vec3 pt = v3(0, 0, 0), n = v3(0, 0, 0);
-	if (v3_len(dir) > 0 && object_intersect(o.obj, &r, 0, INFINITY, &h)) {
+	/* POV-Ray's trace() skips an object whose box the ray misses; that
+	 * box can cut off surface (an intersection with a part that holds an
+	 * inverse object: see csg.c), so the test is needed, not only fast. */
+	if (v3_len(dir) > 0 && object_ray_meets_box(object_world_bounds(o.obj), &r, 0, INFINITY) &&
+	    object_intersect(o.obj, &r, 0, INFINITY, &h)) {
 		pt = v3_madd(from, dir, h.t);
 		/* The leaf's outward normal, turned over once for each inverse
 		 * object above it, never toward the ray: POV-Ray's trace(). */
@@ -480,7 +445,7 @@ struct value builtin_call(struct parser *p)
 	}
 	case KW_MIN_EXTENT: case KW_MAX_EXTENT: {
 		struct value o = arg_item(p, VAL_OBJECT, name);
-		struct aabb b = extent_box(o.obj, 0);
+		struct aabb b = object_world_bounds(o.obj);
 		parse_drop(p, &o);
 		vec3 e = k == KW_MIN_EXTENT ? b.lo : b.hi;
 		/* POV-Ray reports an unbounded object's box as +-1e10. */

@@ -94,7 +94,7 @@ vec3 mat_normal(const mat4 *inv, vec3 n)
 
 struct xform xform_identity(void)
 {
-	struct xform t = {mat_identity(), mat_identity()};
+	struct xform t = {mat_identity(), mat_identity(), true};
 	return t;
 }
 
@@ -116,6 +116,7 @@ struct xform xform_scale(vec3 s)
 	t.fwd.m[0][0] = s.x;
 	t.fwd.m[1][1] = s.y;
 	t.fwd.m[2][2] = s.z;
+	t.simple = s.x == s.y && s.y == s.z;
 	if (s.x != 0 && s.y != 0 && s.z != 0) {
 		t.inv.m[0][0] = 1.0 / s.x;
 		t.inv.m[1][1] = 1.0 / s.y;
@@ -156,6 +157,7 @@ static struct xform rotation(vec3 deg, int snap)
 	t.fwd = mat_mul(&rz, &yx);
 	/* A rotation's inverse is its transpose. */
 	t.inv = mat_transpose(&t.fwd);
+	t.simple = true;
 	return t;
 }
 
@@ -194,6 +196,7 @@ struct xform xform_matrix(const double v[12])
 	for (int r = 0; r < 4; r++)
 		for (int c = 0; c < 3; c++)
 			t.fwd.m[c][r] = v[r * 3 + c];
+	t.simple = false;
 	mat_inverse(&t.fwd, &t.inv);
 	return t;
 }
@@ -203,12 +206,13 @@ struct xform xform_compose(const struct xform *outer, const struct xform *inner)
 	struct xform t;
 	t.fwd = mat_mul(&outer->fwd, &inner->fwd);
 	t.inv = mat_mul(&inner->inv, &outer->inv);
+	t.simple = false;
 	return t;
 }
 
 struct xform xform_invert(const struct xform *a)
 {
-	struct xform t = {a->inv, a->fwd};
+	struct xform t = {a->inv, a->fwd, false};
 	return t;
 }
 

@@ -17,6 +17,9 @@ typedef struct mat4 {
 struct xform {
 	mat4 fwd; /* destination_from_source */
 	mat4 inv; /* source_from_destination */
+	bool simple; /* one translate, rotate or scale by equal factors, as written: POV-Ray
+	              * keeps a sphere's box exact under these (see sphere.c); matrix,
+	              * compose and invert (so every transform block) give false */
 };
 
 mat4 mat_identity(void);

@@ -95,7 +95,10 @@ static bool shadowed(struct tracer *tr, size_t slot, vec3 pt, vec3 ldir, double 
 	tr->stats.rays[RAY_SHADOW]++;
 	struct hit h;
 	const struct object *last = tr->last_blocker[slot];
-	if (last && object_intersect(last, &sr, 0, tmax, &h)) {
+	/* A loose object is skipped where the ray misses its box, as in the
+	 * hierarchy (bvh.c). */
+	if (last && (!last->loose || object_ray_meets_box(last->bounds, &sr, 0, tmax)) &&
+	    object_intersect(last, &sr, 0, tmax, &h)) {
 		tr->stats.shadow_cache_hits++;
 		return true;
 	}

@@ -106,8 +106,9 @@ void object_prepare(struct object *o)
 		object_prepare(o->clip);
 	if (o->bound && o->bound != o->clip)
 		object_prepare(o->bound);
+	o->loose = (o->flags & OBJ_INVERSE) || (o->bound && o->bound != o->clip) || (o->clip && o->clip->loose);
 	if (o->ops->prepare)
-		o->ops->prepare(o);
+		o->ops->prepare(o); /* a CSG adds its children's looseness */
 	o->bounds = object_world_bounds(o);
 }
 
@@ -247,9 +248,13 @@ struct aabb object_world_bounds_raw(const struct object *o, bool invert)
 	struct aabb b = inf_box;
 	bool inverse = ((o->flags & OBJ_INVERSE) != 0) != invert;
 	if (!inverse || o->ops->inverse_bounds) {
-		b = inverse ? o->ops->inverse_bounds(o) : o->ops->bounds(o);
-		if (o->has_xf)
-			b = box_transform(&o->xf.fwd, b);
+		if (!inverse && o->ops->world_bounds)
+			b = o->ops->world_bounds(o);
+		else {
+			b = inverse ? o->ops->inverse_bounds(o) : o->ops->bounds(o);
+			if (o->has_xf)
+				b = box_transform(&o->xf.fwd, b);
+		}
 	}
 	/* POV-Ray keeps the smallest by volume of the object's own box and
 	 * the boxes of its clip and its bound (it does not cut one with the
@@ -271,10 +276,42 @@ struct aabb object_world_bounds_raw(const struct object *o, bool invert)
 
 struct aabb object_world_bounds(const struct object *o)
 {
-	struct aabb b = object_world_bounds_raw(o, false);
+	/* Measured in POV-Ray: `sphere { 0, 1 inverse }` reports +-1, and a
+	 * union with it as a part includes that box; an intersection leaves
+	 * such parts out (see csg.c). */
+	bool keep = (o->flags & OBJ_INVERSE) && !o->ops->inverse_bounds;
+	struct aabb b = object_world_bounds_raw(o, keep);
 	/* Unbounded on any axis, or empty (an intersection of disjoint
 	 * children): infinite, as POV-Ray's min_extent reports it. */
 	if (!aabb_is_finite(b) || b.lo.x > b.hi.x || b.lo.y > b.hi.y || b.lo.z > b.hi.z)
 		return inf_box;
 	return b;
+}
+
+bool object_ray_meets_box(struct aabb b, const struct ray *r, double tmin, double tmax)
+{
+	if (!aabb_is_finite(b))
+		return true;
+	double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
+	double org[3] = {r->org.x, r->org.y, r->org.z}, dir[3] = {r->dir.x, r->dir.y, r->dir.z};
+	for (int i = 0; i < 3; i++) {
+		double m = 1e-9 * (hi[i] - lo[i] + fabs(lo[i]) + fabs(hi[i]));
+		double a = lo[i] - m, z = hi[i] + m;
+		if (dir[i] == 0) {
+			if (org[i] < a || org[i] > z)
+				return false;
+			continue;
+		}
+		double t0 = (a - org[i]) / dir[i], t1 = (z - org[i]) / dir[i];
+		if (t0 > t1) {
+			double t = t0;
+			t0 = t1;
+			t1 = t;
+		}
+		tmin = t0 > tmin ? t0 : tmin;
+		tmax = t1 < tmax ? t1 : tmax;
+		if (tmin > tmax)
+			return false;
+	}
+	return true;
 }

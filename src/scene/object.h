@@ -74,11 +74,16 @@ struct object_ops {
 	/* CSG only (NULL elsewhere): the children, for operations that walk
 	 * the tree (transforms, textures, flags, prepare). */
 	size_t (*children)(struct object *o, struct object ***kids);
-	/* CSG only (may be NULL): object_transform calls it with t before the
-	 * children move. POV-Ray keeps a CSG's box from before its first
-	 * transform and moves that box (a rotated cube of planes stays
-	 * bounded). */
+	/* May be NULL: object_transform calls it with t before the object (a
+	 * CSG: its children) moves. POV-Ray keeps a CSG's box from before its
+	 * first transform and moves that box (a rotated cube of planes stays
+	 * bounded); a sphere notes whether t keeps its box exact. */
 	void (*transform_bounds)(struct object *o, const struct xform *t);
+	/* May be NULL (then: bounds moved by xf): the world-space bounds, for
+	 * a primitive whose box POV-Ray keeps better than its object-space
+	 * box moved by the transform (a sphere only translated, rotated and
+	 * scaled by equal factors). */
+	struct aabb (*world_bounds)(const struct object *o);
 	/* Build what the object needs before rendering (CSG: its own BVH),
 	 * after its children have been prepared; may be NULL. */
 	void (*prepare)(struct object *o);
@@ -96,6 +101,9 @@ struct object {
 	struct interior *interior; /* one reference; NULL: the default (ior 1, no fading) */
 	unsigned flags;           /* enum object_flag */
 	struct aabb bounds;       /* world-space bounds, set by prepare */
+	bool loose;               /* set by prepare: the inside may reach beyond bounds (an
+	                           * inverse part; a box from bounded_by), so inside tests
+	                           * must not cull by them */
 	struct object *clip;      /* clipped_by: hits count only inside it; owned */
 	struct object *bound;     /* bounded_by: rays that miss it skip the object; owned */
 	struct srcpos pos;        /* where the statement began */
@@ -143,8 +151,13 @@ bool object_inside(const struct object *o, vec3 p);
 /* World-space bounds, as POV-Ray's min_extent/max_extent give them: the
  * object-space box transformed, or the box of the clip or the bound when
  * that is smaller by volume; a box unbounded on any axis (or empty)
- * becomes the infinite box. */
+ * becomes the infinite box. An inverse object keeps the box it had (the
+ * other half-space for a plane): its surface lies in it, its inside does
+ * not (see `loose`). */
 struct aabb object_world_bounds(const struct object *o);
+/* Does the ray meet box b with tmin <= t <= tmax? (A margin of 1e-9 of
+ * the box's size keeps hits on its faces.) An infinite box always meets. */
+bool object_ray_meets_box(struct aabb b, const struct ray *r, double tmin, double tmax);
 /* The same before that last step: an axis-aligned plane keeps its
  * half-space, so that a CSG intersection can cut its box with it. With
  * invert, the bounds of the inverse object (a difference's subtracted

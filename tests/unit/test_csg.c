@@ -418,6 +418,65 @@ static void test_inverted_union_alone(void **state)
 	object_free(u);
 }
 
+/* union { sphere { 0, 1 inverse } sphere { 3*x, 1 } }: POV-Ray's box is
+ * <-1,-1,-1> to <4,1,1> (min_extent), though its inside is everything
+ * outside the unit sphere. */
+static struct object *loose_union(void)
+{
+	struct object *u = csg_new(CSG_UNION, nopos);
+	struct object *s = sphere_new(v3(0, 0, 0), 1, nopos);
+	s->flags |= OBJ_INVERSE;
+	csg_add(u, s);
+	csg_add(u, sphere_new(v3(3, 0, 0), 1, nopos));
+	return u;
+}
+
+/* A part whose inside reaches beyond its box (loose) keeps its box for
+ * intersections, as POV-Ray does, but inside tests after prepare must not
+ * cull by it: a point far outside it is still inside the union, so not
+ * inside a difference that subtracts it. And as a part of a union, a loose
+ * intersection loses the surface outside its box, as in POV-Ray (trace()
+ * at <1.5,1.5,-10> along z misses). */
+static void test_loose_parts(void **state)
+{
+	(void)state;
+	struct object *u = loose_union();
+	struct aabb b = object_world_bounds(u);
+	assert_vec_near(b.lo, -1, -1, -1, 0);
+	assert_vec_near(b.hi, 4, 1, 1, 0);
+	struct object *d = csg_new(CSG_DIFFERENCE, nopos);
+	csg_add(d, box_new(v3(-3, -3, -3), v3(3, 3, 3), nopos));
+	csg_add(d, u);
+	csg_settle(d);
+	vec3 p = v3(2.5, 2.5, 2.5);
+	assert_false(object_inside(d, p));
+	object_prepare(d);
+	assert_true(u->loose);
+	assert_false(d->loose);
+	assert_false(object_inside(d, p));
+	assert_true(object_inside(d, v3(0.5, 0, 0)));
+	object_free(d);
+
+	struct object *i = csg_new(CSG_INTERSECTION, nopos);
+	csg_add(i, box_new(v3(-2, -2, -2), v3(2, 2, 2), nopos));
+	csg_add(i, loose_union());
+	b = object_world_bounds(i);
+	assert_vec_near(b.lo, -1, -1, -1, 0);
+	assert_vec_near(b.hi, 2, 1, 1, 0);
+	struct object *top = csg_new(CSG_UNION, nopos);
+	csg_add(top, i);
+	csg_add(top, sphere_new(v3(10, 0, 0), 1, nopos));
+	object_prepare(top);
+	double t[4];
+	assert_int_equal(crossings(top, v3(1.5, 1.5, -10), v3(0, 0, 1), t, 4), 0);
+	/* A ray that meets the box finds every crossing, also outside it. */
+	assert_int_equal(crossings(top, v3(0.5, 0.5, -10), v3(0, 0, 1), t, 4), 4);
+	assert_near(t[0], 8, 1e-12);
+	assert_near(t[3], 12, 1e-12);
+	assert_true(object_inside(top, v3(1.5, 1.5, 1.5)));
+	object_free(top);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -432,6 +491,7 @@ int main(void)
 		cmocka_unit_test(test_prepared_matches_scan),
 		cmocka_unit_test(test_inverted_union),
 		cmocka_unit_test(test_inverted_union_alone),
+		cmocka_unit_test(test_loose_parts),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -210,10 +210,13 @@ static void test_cylinder_oblique_and_transformed(void **state)
 	assert_vec_near(hit_normal(c, v3(-0.6, -0.8, 0), v3(0.6, 0.8, 0), &h), -0.6, -0.8, 0, 1e-14);
 	h = must_hit(c, v3(-0.6, -0.8, 0), v3(0.6, 0.8, 0), 1.5);
 	assert_near(h.t, 6, 1e-14);
-	/* Bounds: the end discs reach r sqrt(1 - w_i^2): 0.8 in x, 0.6 in y. */
+	/* Bounds: POV-Ray's (min_extent <-1.12,-0.84,-1.4>, max_extent
+	 * <4.12,4.84,1.4>): the box of [-1,1]^2 x [0,5] carried by the rotation
+	 * taking z to -w, whose x and y images are <0.64,-0.48,0.6> and
+	 * <-0.48,0.36,0.8> (see cylinder.c). */
 	struct aabb b = object_world_bounds(c);
-	assert_vec_near(b.lo, -0.8, -0.6, -1, 1e-15);
-	assert_vec_near(b.hi, 3.8, 4.6, 1, 1e-15);
+	assert_vec_near(b.lo, -1.12, -0.84, -1.4, 1e-15);
+	assert_vec_near(b.hi, 4.12, 4.84, 1.4, 1e-15);
 	assert_true(object_inside(c, mid));
 	assert_false(object_inside(c, v3_madd(mid, n, 1.01)));
 	assert_true(object_inside(c, v3_madd(mid, n, 0.99)));
