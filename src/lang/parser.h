@@ -95,6 +95,9 @@ struct parser {
 
 	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */
 	int debug_len;               /* its stream at 80 columns */
+	int debug_col;               /* characters since the last newline */
+	char *debug_held;            /* wrapped #debug lines not yet written */
+	size_t debug_nheld, debug_capheld;
 	uint32_t *rng;               /* rand() streams made by seed() */
 	int nrng, caprng;
 
@@ -361,9 +364,10 @@ struct value spline_eval_as(const struct spline *s, double t, int kind, struct s
  * path, or NULL if it is not there. */
 char *parse_find_file(struct parser *p, const char *name, uint32_t from_file);
 
-/* Write #debug text, wrapping lines at 80 columns as POV-Ray does
- * (at the last space when there is one); parse_debug_flush writes what is
- * left at the end. */
+/* Write one #debug message, wrapping lines at 80 columns as POV-Ray does
+ * (see directive.c for the rule); a line is written when it ends.
+ * parse_debug_flush ends the stream: like POV-Ray, it drops a last line
+ * that no newline ended. */
 void parse_debug_write(struct parser *p, const char *text);
 void parse_debug_flush(struct parser *p);
 
