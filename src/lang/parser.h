@@ -358,6 +358,13 @@ struct value spline_eval(const struct spline *s, double t, struct srcpos at);
 /* Evaluate as another spline type (enum spline_kind), or its own if < 0. */
 struct value spline_eval_as(const struct spline *s, double t, int kind, struct srcpos at);
 
+/* The string literal s (a token's text) as POV-Ray reads it under the
+ * charset in force now: under ascii each byte of the file that is not
+ * ASCII becomes a space, with a warning (measured: asc() gives 32, and a
+ * string read before `charset utf8` keeps its spaces). Returns s itself
+ * or an interned copy (text_parse.c). */
+const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos at);
+
 /* Find a file the scene names (#include, image files) as POV-Ray does:
  * relative to the folder of file from_file, then the current folder, then
  * each +L path, then lucent's stdlib (directive.c). Returns a malloc'd

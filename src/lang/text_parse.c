@@ -302,6 +302,32 @@ static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpo
 	return out;
 }
 
+const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos at)
+{
+	size_t len = strlen(s);
+	size_t i = 0, l;
+	for (; i < len; i += l) {
+		ustr_get(s + i, &l);
+		if (l == 1 && (unsigned char)s[i] >= 0x80)
+			break;
+	}
+	if (i == len || p->scene->gs.charset != 0)
+		return s;
+	char *t = malloc(len + 1);
+	if (!t) abort();
+	memcpy(t, s, len + 1);
+	for (; i < len; i += l) {
+		ustr_get(t + i, &l);
+		if (l == 1 && (unsigned char)t[i] >= 0x80)
+			t[i] = ' ';
+	}
+	parse_warning_at(p, at, "non-ASCII character in a string under charset ascii: replaced by a space, as POV-Ray does "
+	                 "(global_settings { charset utf8 } before the string reads it)");
+	const char *r = parse_intern(p, t, len);
+	free(t);
+	return r;
+}
+
 /* text '{' ( ttf STRING | internal FLOAT ) STRING FLOAT [','] VECTOR
  *   { object_modifier } '}'
  * The current token is the first after '{'; reads up to the modifiers. */
