@@ -355,7 +355,7 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 		struct ttf_outline ol;
 		if (!ttf_glyph_metrics(font, g, &m) || !ttf_glyph_outline(font, g, &ol)) {
 			if (bad_glyph && !*bad_glyph)
-				*bad_glyph = codes[i] ? codes[i] : 0xFFFFFFFFu;
+				*bad_glyph = codes[i] & ~TTF_MAC ? codes[i] & ~TTF_MAC : 0xFFFFFFFFu;
 			continue;
 		}
 		if (i == 0)
