@@ -450,6 +450,7 @@ bool ttf_glyph_metrics(const struct ttf_font *f, unsigned g, struct ttf_metrics 
 		return true;
 	if (len < 10)
 		return false;
+	m->composite = s16(f, off) < 0;
 	m->xmin = s16(f, off + 2);
 	m->ymin = s16(f, off + 4);
 	m->xmax = s16(f, off + 6);

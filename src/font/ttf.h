@@ -32,6 +32,7 @@ struct ttf_metrics {
 	int advance; /* advance width (hmtx) */
 	int lsb;     /* left side bearing (hmtx) */
 	int xmin, ymin, xmax, ymax; /* the glyph header's box; all 0 for an empty glyph */
+	bool composite; /* made of other glyphs */
 };
 
 /* Load the font in the file at path. Returns it (free with ttf_free), or
