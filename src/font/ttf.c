@@ -50,6 +50,8 @@ struct ttf_font {
 	bool long_loca;
 	enum cmap_kind cmap_kind;
 	bool symbol; /* the cmap is a (3, 0) symbol map */
+	size_t mac;  /* the Macintosh (1, 0) subtable, format 0 or 6 ... */
+	enum cmap_kind mac_kind; /* ... CMAP_NONE when there is none */
 };
 
 /* ---- reading ---- */
@@ -119,6 +121,10 @@ static void pick_cmap(struct ttf_font *f, size_t cmap, size_t len)
 		                 : fmt == 12 ? CMAP_FMT12 : CMAP_NONE;
 		if (k == CMAP_NONE)
 			continue;
+		if (pid == 1 && eid == 0 && (k == CMAP_FMT0 || k == CMAP_FMT6) && f->mac_kind == CMAP_NONE) {
+			f->mac = sub;
+			f->mac_kind = k;
+		}
 		int rank = 0;
 		if (pid == 3 && eid == 10) rank = 5;
 		else if (pid == 3 && eid == 1) rank = 4;
@@ -302,12 +308,18 @@ unsigned ttf_units_per_em(const struct ttf_font *f)
 
 /* ---- character map ---- */
 
-static unsigned lookup(const struct ttf_font *f, uint32_t c)
+/* The glyph of code c in the subtable at s, of the given kind. A code
+ * past the 256 of a format-0 table reads the bytes that follow it in the
+ * file when it is the Mac table read for charset ascii, as POV-Ray 3.7
+ * does (measured: cyrvetic.ttf's "\u0116" under charset ascii is its
+ * "A", the byte 0x116 places into its Mac table). */
+static unsigned lookup_in(const struct ttf_font *f, size_t s, enum cmap_kind kind, uint32_t c, bool spill)
 {
-	size_t s = f->cmap;
-	switch (f->cmap_kind) {
+	switch (kind) {
 	case CMAP_FMT0:
-		return c < 256 && in_range(f, s + 6, 256) ? u8(f, s + 6 + c) : 0;
+		if (c >= 256 && !spill)
+			return 0;
+		return in_range(f, s + 6, (size_t)c + 1) ? u8(f, s + 6 + c) : 0;
 	case CMAP_FMT6: {
 		if (!in_range(f, s, 10))
 			return 0;
@@ -375,8 +387,22 @@ static unsigned lookup(const struct ttf_font *f, uint32_t c)
 	return 0;
 }
 
+static unsigned lookup(const struct ttf_font *f, uint32_t c)
+{
+	return lookup_in(f, f->cmap, f->cmap_kind, c, false);
+}
+
+bool ttf_has_mac_cmap(const struct ttf_font *f)
+{
+	return f->mac_kind != CMAP_NONE;
+}
+
 unsigned ttf_glyph_index(const struct ttf_font *f, uint32_t c)
 {
+	if (c & TTF_MAC) {
+		unsigned g = f->mac_kind != CMAP_NONE ? lookup_in(f, f->mac, f->mac_kind, c & ~TTF_MAC, true) : 0;
+		return g < f->nglyphs ? g : 0;
+	}
 	unsigned g = lookup(f, c);
 	if (!g && f->symbol && c < 0x100)
 		g = lookup(f, 0xF000 + c);
@@ -424,6 +450,7 @@ bool ttf_glyph_metrics(const struct ttf_font *f, unsigned g, struct ttf_metrics 
 		return true;
 	if (len < 10)
 		return false;
+	m->composite = s16(f, off) < 0;
 	m->xmin = s16(f, off + 2);
 	m->ymin = s16(f, off + 4);
 	m->xmax = s16(f, off + 6);

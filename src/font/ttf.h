@@ -32,6 +32,7 @@ struct ttf_metrics {
 	int advance; /* advance width (hmtx) */
 	int lsb;     /* left side bearing (hmtx) */
 	int xmin, ymin, xmax, ymax; /* the glyph header's box; all 0 for an empty glyph */
+	bool composite; /* made of other glyphs */
 };
 
 /* Load the font in the file at path. Returns it (free with ttf_free), or
@@ -44,9 +45,15 @@ void ttf_free(struct ttf_font *f);
 
 /* Font units per em (the head table's unitsPerEm). */
 unsigned ttf_units_per_em(const struct ttf_font *f);
+/* A code with this bit set is looked up in the font's Macintosh (1, 0)
+ * table, as POV-Ray does under charset ascii. */
+#define TTF_MAC 0x80000000u
 /* The glyph of Unicode code point c (0, the missing glyph, if the font has
- * none). A symbol font (a (3, 0) cmap) is looked up at c and at 0xF000 + c. */
+ * none). A symbol font (a (3, 0) cmap) is looked up at c and at 0xF000 + c.
+ * c | TTF_MAC is code c of the Macintosh table (0 without one). */
 unsigned ttf_glyph_index(const struct ttf_font *f, uint32_t c);
+/* Whether the font has a Macintosh (1, 0) table of format 0 or 6. */
+bool ttf_has_mac_cmap(const struct ttf_font *f);
 /* The metrics of glyph g; false if g is out of range or its data damaged. */
 bool ttf_glyph_metrics(const struct ttf_font *f, unsigned g, struct ttf_metrics *m);
 /* The kerning between glyphs left and right in font units (the first

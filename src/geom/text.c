@@ -355,7 +355,7 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 		struct ttf_outline ol;
 		if (!ttf_glyph_metrics(font, g, &m) || !ttf_glyph_outline(font, g, &ol)) {
 			if (bad_glyph && !*bad_glyph)
-				*bad_glyph = codes[i] ? codes[i] : 0xFFFFFFFFu;
+				*bad_glyph = codes[i] & ~TTF_MAC ? codes[i] & ~TTF_MAC : 0xFFFFFFFFu;
 			continue;
 		}
 		if (i == 0)
@@ -363,7 +363,18 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 		else
 			pen_x += ttf_kerning(font, prev, g) * s;
 		if (ol.n) {
-			add_glyph(T, &ol, s, pen_x, pen_y);
+			/* POV-Ray 3.7 draws a composite glyph (an accented
+			 * letter: a base and an accent placed on it) as if its
+			 * xMin were min(xMin, 0): its xMin further right than a
+			 * simple glyph when that is positive. Measured with
+			 * DejaVuSans, DejaVuSerif and LiberationSans: "\u00e9"
+			 * alone reaches 1151/2048 where "e" reaches
+			 * (1151 - 113)/2048, "X\u00e9" is 113/2048 wider than
+			 * "Xe", "\u00e9X" is as wide as "eX", and DejaVuSans'
+			 * "\u00ef" (xMin -12) is placed as a simple glyph
+			 * (tests/lang/text-composite). */
+			double shift = m.composite && m.xmin > 0 ? m.xmin * s : 0;
+			add_glyph(T, &ol, s, pen_x + shift, pen_y);
 		} else {
 			/* POV-Ray's bounds take in the pen position of an empty
 			 * glyph (a space). */
@@ -377,5 +388,9 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 		pen_y += off_y;
 		prev = g;
 	}
+	/* POV-Ray's bounds begin at x = 0 even when the first glyph, a
+	 * composite, is drawn right of it (measured: "\u00e9" in DejaVuSans). */
+	if (n && T->lo[0] > 0)
+		T->lo[0] = 0;
 	return &T->base;
 }

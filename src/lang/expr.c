@@ -481,7 +481,7 @@ static struct value parse_primary(struct parser *p)
 	case TOK_LT:
 		return parse_vector_literal(p);
 	case TOK_STRING: {
-		struct value v = {.kind = VAL_STRING, .pos = at, .str = t->str};
+		struct value v = {.kind = VAL_STRING, .pos = at, .str = parse_charset_literal(p, t->str, at)};
 		parse_advance(p);
 		return v;
 	}
@@ -679,7 +679,7 @@ const char *parse_string(struct parser *p)
 	const struct token *t = parse_peek(p);
 	struct srcpos at = t->pos;
 	if (t->kind == TOK_STRING) {
-		const char *s = t->str;
+		const char *s = parse_charset_literal(p, t->str, at);
 		parse_advance(p);
 		return s;
 	}

@@ -382,12 +382,17 @@ static void sput(struct lexer *lx, size_t *len, char c)
 
 /* A string literal: "..." with backslash escapes. As in POV-Ray a string
  * may span lines (the line breaks are part of it); one that the file ends
- * inside is reported where it began. */
+ * inside is reported where it began, and so is one with more than 255
+ * characters of source between its quotes (POV-Ray's "String too long":
+ * 255 pass, 256 fail, an escape counting as the characters it is written
+ * with; tests/errors/string-too-long). */
 static bool lex_string(struct lexer *lx)
 {
+	enum { MAX_STRING = 255 };
 	struct srcpos start = here(lx, lx->i);
 	size_t len = 0;
 	lx->i++; /* opening quote */
+	size_t first = lx->i;
 	for (;;) {
 		if (lx->i >= lx->n) {
 			diag_report(lx->d, DIAG_ERROR, start, "unterminated string: the file ends before its closing '\"'");
@@ -452,6 +457,10 @@ static bool lex_string(struct lexer *lx)
 			c = enc[3];
 		}
 		sput(lx, &len, c);
+	}
+	if (lx->i - 1 - first > MAX_STRING) {
+		diag_report(lx->d, DIAG_ERROR, start, "string too long: POV-Ray allows at most %d characters between the quotes", MAX_STRING);
+		return false;
 	}
 	struct token *t = push(lx, TOK_STRING, start);
 	t->str = intern(lx->sm->names, lx->sbuf ? lx->sbuf : "", len);

@@ -95,6 +95,9 @@ struct parser {
 
 	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */
 	int debug_len;               /* its stream at 80 columns */
+	int debug_col;               /* characters since the last newline */
+	char *debug_held;            /* wrapped #debug lines not yet written */
+	size_t debug_nheld, debug_capheld;
 	uint32_t *rng;               /* rand() streams made by seed() */
 	int nrng, caprng;
 
@@ -355,15 +358,23 @@ struct value spline_eval(const struct spline *s, double t, struct srcpos at);
 /* Evaluate as another spline type (enum spline_kind), or its own if < 0. */
 struct value spline_eval_as(const struct spline *s, double t, int kind, struct srcpos at);
 
+/* The string literal s (a token's text) as POV-Ray reads it under the
+ * charset in force now: under ascii each byte of the file that is not
+ * ASCII becomes a space, with a warning (measured: asc() gives 32, and a
+ * string read before `charset utf8` keeps its spaces). Returns s itself
+ * or an interned copy (text_parse.c). */
+const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos at);
+
 /* Find a file the scene names (#include, image files) as POV-Ray does:
  * relative to the folder of file from_file, then the current folder, then
  * each +L path, then lucent's stdlib (directive.c). Returns a malloc'd
  * path, or NULL if it is not there. */
 char *parse_find_file(struct parser *p, const char *name, uint32_t from_file);
 
-/* Write #debug text, wrapping lines at 80 columns as POV-Ray does
- * (at the last space when there is one); parse_debug_flush writes what is
- * left at the end. */
+/* Write one #debug message, wrapping lines at 80 columns as POV-Ray does
+ * (see directive.c for the rule); a line is written when it ends.
+ * parse_debug_flush ends the stream: like POV-Ray, it drops a last line
+ * that no newline ended. */
 void parse_debug_write(struct parser *p, const char *text);
 void parse_debug_flush(struct parser *p);
 

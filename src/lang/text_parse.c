@@ -235,11 +235,14 @@ static int utf8_seq(const unsigned char *s, size_t n, uint32_t *c)
 	return len;
 }
 
-/* Under charset ascii POV-Ray looks a character code up in the font's
- * Macintosh (Mac Roman) table: measured with DejaVuSans, "\u00e9" is the
- * glyph of U+00C8 (Mac Roman 0xE9), "\u00d6" that of U+00F7, and a code
- * above 0xFF has no glyph (the font's missing-glyph box, as "\u0016").
- * The Unicode characters of Mac Roman's codes 0x80..0xFF: */
+/* Under charset ascii POV-Ray looks a character code of 0x80 or more up in
+ * the font's own Macintosh table (cmap platform 1; ttf.c reads it, codes
+ * past 0xFF included, as POV-Ray does): measured with cyrvetic.ttf, whose
+ * Mac table is not Mac Roman, and timrom.ttf (tests/lang/text-mac-cmap).
+ * A font without one is read as if its Mac table were Mac Roman: "\u00e9"
+ * is the glyph of U+00C8 (Mac Roman 0xE9), "\u00d6" that of U+00F7, and a
+ * code above 0xFF has no glyph. The Unicode characters of Mac Roman's
+ * codes 0x80..0xFF: */
 static const uint16_t mac_roman[128] = {
 	0x00C4, 0x00C5, 0x00C7, 0x00C9, 0x00D1, 0x00D6, 0x00DC, 0x00E1, 0x00E0, 0x00E2, 0x00E4, 0x00E3, 0x00E5,
 	0x00E7, 0x00E9, 0x00E8, 0x00EA, 0x00EB, 0x00ED, 0x00EC, 0x00EE, 0x00EF, 0x00F1, 0x00F3, 0x00F2, 0x00F4,
@@ -260,7 +263,7 @@ static const uint16_t mac_roman[128] = {
  * (mac_roman above). A byte that begins no UTF-8 sequence is that code.
  * With charset ascii (POV-Ray's default) a UTF-8 sequence from the file
  * becomes one space per byte, with a warning, as POV-Ray does. */
-static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpos at)
+static uint32_t *decode(struct parser *p, const struct ttf_font *font, const char *s, size_t *n, struct srcpos at)
 {
 	size_t len = strlen(s);
 	uint32_t *out = malloc((len ? len : 1) * sizeof *out);
@@ -274,8 +277,12 @@ static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpo
 		size_t cl;
 		if (ustr_is_coded(s + i)) {
 			c = ustr_get(s + i, &cl);
-			if (ascii && c >= 0x80)
-				c = c <= 0xFF ? mac_roman[c - 0x80] : 0xFFFF; /* U+FFFF: no glyph in any font */
+			if (ascii && c >= 0x80) {
+				if (ttf_has_mac_cmap(font))
+					c |= TTF_MAC;
+				else
+					c = c <= 0xFF ? mac_roman[c - 0x80] : 0xFFFF; /* U+FFFF: no glyph in any font */
+			}
 			out[k++] = c;
 			i += cl;
 			continue;
@@ -300,6 +307,32 @@ static uint32_t *decode(struct parser *p, const char *s, size_t *n, struct srcpo
 	}
 	*n = k;
 	return out;
+}
+
+const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos at)
+{
+	size_t len = strlen(s);
+	size_t i = 0, l;
+	for (; i < len; i += l) {
+		ustr_get(s + i, &l);
+		if (l == 1 && (unsigned char)s[i] >= 0x80)
+			break;
+	}
+	if (i == len || p->scene->gs.charset != 0)
+		return s;
+	char *t = malloc(len + 1);
+	if (!t) abort();
+	memcpy(t, s, len + 1);
+	for (; i < len; i += l) {
+		ustr_get(t + i, &l);
+		if (l == 1 && (unsigned char)t[i] >= 0x80)
+			t[i] = ' ';
+	}
+	parse_warning_at(p, at, "non-ASCII character in a string under charset ascii: replaced by a space, as POV-Ray does "
+	                 "(global_settings { charset utf8 } before the string reads it)");
+	const char *r = parse_intern(p, t, len);
+	free(t);
+	return r;
 }
 
 /* text '{' ( ttf STRING | internal FLOAT ) STRING FLOAT [','] VECTOR
@@ -329,7 +362,7 @@ struct object *parse_text(struct parser *p, struct srcpos at)
 	parse_accept(p, TOK_COMMA);
 	vec3 off = parse_vector(p);
 	size_t n;
-	uint32_t *codes = decode(p, str, &n, sat);
+	uint32_t *codes = decode(p, font, str, &n, sat);
 	int cslot = parse_own(p, codes, free);
 	uint32_t bad;
 	struct object *o = text_new(font, codes, n, thick, off.x, off.y, at, &bad);

@@ -278,6 +278,49 @@ static void test_text_trace(void **state)
 	ttf_free(f);
 }
 
+/* Composite glyphs (accented letters) in DejaVuSans, a system font (the
+ * test skips without it). Expected values: POV-Ray 3.7 with charset utf8,
+ * `text { ttf "DejaVuSans.ttf" S 1, 0 }`, min_extent and max_extent printed
+ * with vstr(3, ..., 8), and trace() from <-1, 0.28, 0.5> along +x (its normal as POV-Ray gives it). */
+static void test_text_composite(void **state)
+{
+	(void)state;
+	static const char path[] = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+	char err[200];
+	if (access(path, R_OK) != 0) {
+		skip();
+		return;
+	}
+	struct ttf_font *f = ttf_load(path, err, sizeof err);
+	if (!f)
+		fail_msg("%s: %s", path, err);
+	struct object *o;
+	o = text(f, "e", 1, 0, 0);
+	assert_extent(o, -0.00001, -0.01418, -0.00001, 0.50685, 0.56007, 1.00001);
+	object_free(o);
+	/* e acute: drawn 113 units (its xMin) right of where a simple "e"
+	 * is, the bounds still from x = 0. */
+	o = text(f, "\xe9", 1, 0, 0);
+	assert_extent(o, -0.00001, -0.01418, -0.00001, 0.56203, 0.79981, 1.00001);
+	assert_trace(o, v3(-1, 0.28, 0.5), v3(1, 0, 0), v3(0.05533, 0.28, 0.5), v3(0.99970, -0.02467, 0));
+	object_free(o);
+	o = text(f, "\xe9X", 1, 0, 0);
+	assert_extent(o, -0.00001396, -0.01417761, -0.00002243, 1.21388495, 0.79982585, 1.00001502);
+	object_free(o);
+	o = text(f, "X\xe9", 1, 0, 0);
+	assert_extent(o, -0.00001396, -0.01417761, -0.00002267, 1.22755682, 0.79982609, 1.00001502);
+	object_free(o);
+	/* E grave (xMin 201); i diaeresis has xMin -12 and is placed as a
+	 * simple glyph is. */
+	o = text(f, "\xc8", 1, 0, 0);
+	assert_extent(o, -0.00002, -0.00002, -0.00001, 0.56789, 0.92726, 1.00002);
+	object_free(o);
+	o = text(f, "\xef", 1, 0, 0);
+	assert_extent(o, -0.00001323, -0.00001745, -0.00000606, 0.29005650, 0.75781757, 1.00001419);
+	object_free(o);
+	ttf_free(f);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -286,6 +329,7 @@ int main(void)
 		cmocka_unit_test(test_text_extents),
 		cmocka_unit_test(test_text_other_fonts),
 		cmocka_unit_test(test_text_trace),
+		cmocka_unit_test(test_text_composite),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
