@@ -196,13 +196,29 @@ static int piece_spans(const struct sweep *sw, int i, vec3 o, vec3 u, double len
 {
 	struct ray_poly rp;
 	ray_poly_init(&rp, &sw->pc[i], sw->deg, o, u);
-	double cut[8];
+	double cut[9];
 	int m = solve_poly(rp.e, 2 * sw->deg, 0, 1, false, cut + 1);
+	/* A linear piece has no spheres where its radius is negative
+	 * (POV-Ray's, measured: a sweep from radius -0.5 to 0.5 is hit only
+	 * on its positive half); the curved ones keep theirs. */
+	double rlo = sw->pc[i].c[0][3], rhi = rlo + sw->pc[i].c[1][3];
+	if (sw->deg == 1 && (rlo < 0) != (rhi < 0)) {
+		double z = rlo / (rlo - rhi);
+		int k = m + 1;
+		while (k > 1 && cut[k - 1] > z) {
+			cut[k] = cut[k - 1];
+			k--;
+		}
+		cut[k] = z;
+		m++;
+	}
 	cut[0] = 0;
 	cut[m + 1] = 1;
 	for (int j = 0; j <= m; j++) {
-		double a = cut[j], b = cut[j + 1];
-		if (!(poly_eval(rp.e, 2 * sw->deg, 0.5 * (a + b)) > 0))
+		double a = cut[j], b = cut[j + 1], mid = 0.5 * (a + b);
+		if (!(poly_eval(rp.e, 2 * sw->deg, mid) > 0))
+			continue;
+		if (sw->deg == 1 && !(rlo + (rhi - rlo) * mid > 0))
 			continue;
 		struct span *sp = &out[n++];
 		sp->t0 = f_min(&rp, 1, a, b, &sp->s0) / len;
@@ -325,7 +341,12 @@ static vec3 sweep_normal(const struct object *o, vec3 p, const struct hit *h)
 {
 	const struct sweep *sw = (const struct sweep *)o;
 	int i = h->part >= 0 && h->part < sw->n ? h->part : 0;
-	return v3_sub(p, piece_center(&sw->pc[i], sw->deg, h->u));
+	const struct piece *pc = &sw->pc[i];
+	vec3 n = v3_sub(p, piece_center(pc, sw->deg, h->u));
+	/* POV-Ray's normal is (p - C) / R: inward where the radius is
+	 * negative (measured on a b_spline of radii -0.5 to 0.5). */
+	double rad[4] = {pc->c[0][3], pc->c[1][3], pc->c[2][3], pc->c[3][3]};
+	return poly_eval(rad, sw->deg, h->u) < 0 ? v3_neg(n) : n;
 }
 
 static struct aabb sweep_bounds(const struct object *o)

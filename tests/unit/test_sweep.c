@@ -149,6 +149,35 @@ static void test_tolerance(void **state)
 	object_free(o);
 }
 
+/* Negative radii, as POV-Ray takes them: a linear piece has no spheres
+ * where its radius is below 0; a curved one keeps them, and its normal
+ * there, (p - C) / R, points inward. inside() counts them all. (POV-Ray
+ * trace() values printed to 9 digits.) */
+static void test_negative_radius(void **state)
+{
+	(void)state;
+	const vec3 c[4] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}};
+	const double neg[2] = {-0.5, -0.5}, mixed[2] = {-0.5, 0.5}, b[4] = {-0.5, -0.5, 0.5, 0.5};
+	const vec3 c2[2] = {{0, 0, 0}, {2, 0, 0}};
+	struct object *o = sweep_new(SWEEP_LINEAR, c2, neg, 2, nopos);
+	object_prepare(o);
+	assert_false(hits(o, v3(1, 0.1, -5), v3(0, 0, 1), 0, INFINITY));
+	assert_true(object_inside(o, v3(1, 0, 0)));
+	object_free(o);
+	o = sweep_new(SWEEP_LINEAR, c2, mixed, 2, nopos);
+	object_prepare(o);
+	assert_false(hits(o, v3(0.2, 0.1, -5), v3(0, 0, 1), 0, INFINITY));
+	check_hit(o, v3(1.8, 0.1, -5), v3(0, 0, 1), v3(1.8, 0.1, -0.447213595), v3(-0.4, 0.2, -0.894427191));
+	object_free(o);
+	o = sweep_new(SWEEP_B_SPLINE, c, b, 4, nopos);
+	object_prepare(o);
+	struct hit h = must_hit(o, v3(1.2, 0, -5), v3(0, 0, 1), 0);
+	assert_near(h.t, 5 - 0.268623772, 1e-9);
+	vec3 n = hit_normal(o, v3(1.2, 0, -5), v3(0, 0, 1), &h);
+	assert_vec_near(n, -0.530763522, 0, 0.847519960, 1e-9);
+	object_free(o);
+}
+
 /* Copies own their pieces. */
 static void test_copy(void **state)
 {
@@ -167,6 +196,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_linear),    cmocka_unit_test(test_b_spline), cmocka_unit_test(test_cubic),
 		cmocka_unit_test(test_all_hits),  cmocka_unit_test(test_tolerance), cmocka_unit_test(test_copy),
+		cmocka_unit_test(test_negative_radius),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
