@@ -985,6 +985,7 @@ static struct object *parse_object_in(struct parser *p, bool child)
 		break;
 	case KW_BLOB:
 	case KW_HEIGHT_FIELD:
+	case KW_SPHERE_SWEEP:
 		memset(&args, 0, sizeof args);
 		args.kw = k;
 		s.args = &args;

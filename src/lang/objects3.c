@@ -1,12 +1,15 @@
-/* objects3.c: the arguments and own modifiers of blob and height_field,
+/* objects3.c: the arguments and own modifiers of blob, height_field and
+ * sphere_sweep,
  * with POV-Ray's rules (measured where the manual is silent: a blob's
  * components and threshold come before the object modifiers; commas are
  * optional; a component's texture, pigment, normal and finish, and its
  * transformations, are the only modifiers it takes; a height field's
- * smooth, water_level and hierarchy go among the object modifiers). The
- * shapes are in src/geom/blob.c and heightfield.c. */
+ * smooth, water_level and hierarchy go among the object modifiers; a
+ * sphere sweep's tolerance comes once, straight after its spheres). The
+ * shapes are in src/geom/blob.c, heightfield.c and sweep.c. */
 #include "geom/blob.h"
 #include "geom/heightfield.h"
+#include "geom/sweep.h"
 #include "image/formats.h"
 #include "image/oiio.h"
 #include "lang/parser.h"
@@ -248,13 +251,63 @@ static struct object *parse_height_field(struct parser *p, struct srcpos at)
 	return o;
 }
 
+/* sphere_sweep '{' (linear_spline | b_spline | cubic_spline) F { ',' V ',' F } [tolerance F] ...
+ * The count is truncated, as POV-Ray reads it; commas are optional. */
+static struct object *parse_sphere_sweep(struct parser *p, struct srcpos at)
+{
+	enum sweep_spline kind;
+	if (parse_accept_kw(p, KW_LINEAR_SPLINE))
+		kind = SWEEP_LINEAR;
+	else if (parse_accept_kw(p, KW_B_SPLINE))
+		kind = SWEEP_B_SPLINE;
+	else if (parse_accept_kw(p, KW_CUBIC_SPLINE))
+		kind = SWEEP_CUBIC;
+	else
+		parse_expected(p, "linear_spline, b_spline or cubic_spline (a sphere_sweep's interpolation)");
+	struct srcpos nat = parse_peek(p)->pos;
+	double count = trunc(parse_float(p));
+	int least = sweep_min_spheres(kind);
+	if (!(count >= least))
+		parse_error_at(p, nat, "a %s sphere_sweep needs at least %d spheres, found %g",
+		               kind == SWEEP_LINEAR ? "linear_spline" : kind == SWEEP_B_SPLINE ? "b_spline" : "cubic_spline",
+		               least, count);
+	if (count > 1e7)
+		parse_error_at(p, nat, "a sphere_sweep of %g spheres is more than lucent takes (10000000)", count);
+	int n = (int)count;
+	vec3 *c = malloc((size_t)n * sizeof *c);
+	if (!c) abort();
+	int cslot = parse_own(p, c, free_cb);
+	double *r = malloc((size_t)n * sizeof *r);
+	if (!r) abort();
+	int rslot = parse_own(p, r, free_cb);
+	for (int i = 0; i < n; i++) {
+		opt_comma(p);
+		c[i] = parse_vector(p);
+		opt_comma(p);
+		r[i] = parse_float(p);
+	}
+	struct object *o = sweep_new(kind, c, r, n, at);
+	parse_release(p, rslot);
+	parse_release(p, cslot);
+	free(r);
+	free(c);
+	if (parse_accept_kw(p, KW_TOLERANCE)) {
+		int slot = parse_own(p, o, free_object_cb);
+		sweep_set_tolerance(o, parse_float(p));
+		parse_release(p, slot);
+	}
+	return o;
+}
+
 bool parse_is_object3(enum kw k)
 {
-	return k == KW_BLOB || k == KW_HEIGHT_FIELD;
+	return k == KW_BLOB || k == KW_HEIGHT_FIELD || k == KW_SPHERE_SWEEP;
 }
 
 struct object *parse_object3(struct parser *p, enum kw k, struct srcpos at)
 {
+	if (k == KW_SPHERE_SWEEP)
+		return parse_sphere_sweep(p, at);
 	if (k == KW_HEIGHT_FIELD)
 		return parse_height_field(p, at);
 	return parse_blob(p, at);
