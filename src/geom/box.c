@@ -74,11 +74,19 @@ static int box_all_hits(const struct object *o, const struct ray *r, double tmin
 	return n;
 }
 
+/* Points on the faces count as inside, as in POV-Ray (inside() of a point
+ * on a face is 1, and a CSG keeps hits on another part's face: the boxes
+ * of Segment_of_Object at 0 and 180 degrees meet along a face). A box
+ * flat along an axis has no inside at all, where POV-Ray's has its whole
+ * face: subtracting a set of zero volume must leave a solid as it was
+ * (tests/stability degenerate.pov; POV-Ray leaves a black square there). */
 static bool box_inside(const struct object *o, vec3 p)
 {
 	const struct box *b = (const struct box *)o;
-	return p.x > b->lo.x && p.x < b->hi.x && p.y > b->lo.y && p.y < b->hi.y &&
-	       p.z > b->lo.z && p.z < b->hi.z;
+	if (!(b->lo.x < b->hi.x && b->lo.y < b->hi.y && b->lo.z < b->hi.z))
+		return false;
+	return p.x >= b->lo.x && p.x <= b->hi.x && p.y >= b->lo.y && p.y <= b->hi.y &&
+	       p.z >= b->lo.z && p.z <= b->hi.z;
 }
 
 static vec3 box_normal(const struct object *o, vec3 p, const struct hit *h)

@@ -11,6 +11,7 @@
  * an open cone has no caps but its inside is still that of the closed
  * solid. */
 #include "geom/shapes.h"
+#include "geom/frame.h"
 
 #include <stdlib.h>
 
@@ -219,25 +220,13 @@ static const struct object_ops cone_ops;
  * would give [-1.5, 2.5]; cone { 0, -1, x+y, 0.5 }: x in [-0.5, 1.5]). */
 static mat4 canonical_frame(const struct cone *c)
 {
-	double r = fmax(c->r0, c->r1);
-	vec3 w = c->w, org = c->org, xa = v3(1, 0, 0), ya = v3(0, 1, 0);
+	vec3 w = c->w, org = c->org;
 	if (c->base.ops == &cone_ops && c->r0 < c->r1) {
 		org = v3_madd(c->org, w, c->len);
 		w = v3_neg(w);
 	}
-	double q = 1 - w.z;
-	if (q > 0) {
-		xa = v3(1 - w.x * w.x / q, -w.x * w.y / q, w.x);
-		ya = v3(-w.x * w.y / q, 1 - w.y * w.y / q, w.y);
-	}
-	mat4 f = mat_identity();
-	vec3 col[4] = {v3_scale(xa, r), v3_scale(ya, r), v3_scale(w, c->len), org};
-	for (int j = 0; j < 4; j++) {
-		f.m[0][j] = col[j].x;
-		f.m[1][j] = col[j].y;
-		f.m[2][j] = col[j].z;
-	}
-	return f;
+	double r = fmax(c->r0, c->r1);
+	return geom_axis_frame(w, r, r, c->len, org);
 }
 
 static const struct aabb canonical_box = {{-1, -1, 0}, {1, 1, 1}};

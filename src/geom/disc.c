@@ -3,6 +3,7 @@
  * plane holding it: the side the normal points away from, not limited by
  * the radius. */
 #include "geom/shapes.h"
+#include "geom/frame.h"
 
 #include <stdlib.h>
 
@@ -63,15 +64,31 @@ static vec3 disc_normal(const struct object *o, vec3 p, const struct hit *h)
 	return ((const struct disc *)o)->n;
 }
 
-/* A disc of radius r across the unit normal n reaches r sqrt(1 - n_i^2)
- * along axis i. */
+/* POV-Ray's box, measured with min_extent/max_extent: the box of
+ * [-r,r]^2 x [-0.001,0.001] carried to the disc by the frame that takes z
+ * to minus the normal (frame.h), and then by the object's transform as
+ * one matrix. So disc { <1,2,3>, <1,2,3>, 1 } reaches x in [-0.039911,
+ * 2.039911] (the ring itself only [0.036, 1.964]), and disc { 0, y, 1 } is
+ * 0.002 thick. This is that map, from [-1,1]^3. */
+static mat4 disc_frame(const struct disc *s)
+{
+	return geom_axis_frame(v3_neg(s->n), s->radius, s->radius, 0.001, s->c);
+}
+
+static const struct aabb unit_box = {{-1, -1, -1}, {1, 1, 1}};
+
 static struct aabb disc_bounds(const struct object *o)
 {
-	const struct disc *s = (const struct disc *)o;
-	double r = s->radius;
-	vec3 e = v3(r * sqrt(fmax(0, 1 - s->n.x * s->n.x)), r * sqrt(fmax(0, 1 - s->n.y * s->n.y)),
-	            r * sqrt(fmax(0, 1 - s->n.z * s->n.z)));
-	return (struct aabb){v3_sub(s->c, e), v3_add(s->c, e)};
+	mat4 f = disc_frame((const struct disc *)o);
+	return mat_bounds(&f, unit_box);
+}
+
+static struct aabb disc_world_bounds(const struct object *o)
+{
+	mat4 f = disc_frame((const struct disc *)o);
+	if (o->has_xf)
+		f = mat_mul(&o->xf.fwd, &f);
+	return mat_bounds(&f, unit_box);
 }
 
 static struct object *disc_copy(const struct object *o)
@@ -89,6 +106,7 @@ static const struct object_ops disc_ops = {
 	.inside = disc_inside,
 	.normal = disc_normal,
 	.bounds = disc_bounds,
+	.world_bounds = disc_world_bounds,
 	.copy = disc_copy,
 };
 

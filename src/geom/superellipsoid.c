@@ -332,9 +332,12 @@ static vec3 se_normal(const struct object *o, vec3 p, const struct hit *h)
 	return v3(copysign(g[0], p.x), copysign(g[1], p.y), copysign(g[2], p.z));
 }
 
+/* POV-Ray's box is the unit cube widened by 1e-4 each way (measured:
+ * min_extent of superellipsoid { <0.5,0.5> } is -1.0001 on every axis,
+ * and the widened cube is what the object's transform moves). */
 static struct aabb se_bounds(const struct object *o)
 {
-	return (struct aabb){{-1, -1, -1}, {1, 1, 1}};
+	return (struct aabb){{-1.0001, -1.0001, -1.0001}, {1.0001, 1.0001, 1.0001}};
 }
 
 static struct object *se_copy(const struct object *o)

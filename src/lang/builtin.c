@@ -447,10 +447,10 @@ struct value builtin_call(struct parser *p)
 		struct value o = arg_item(p, VAL_OBJECT, name);
 		struct aabb b = object_world_bounds(o.obj);
 		parse_drop(p, &o);
-		vec3 e = k == KW_MIN_EXTENT ? b.lo : b.hi;
-		/* POV-Ray reports an unbounded object's box as +-1e10. */
-		e = v3(fmax(fmin(e.x, 1e10), -1e10), fmax(fmin(e.y, 1e10), -1e10), fmax(fmin(e.z, 1e10), -1e10));
-		r = vec3_value(e, at);
+		/* As POV-Ray stores it, in single precision; an unbounded
+		 * object's box is +-1e10. */
+		b = object_box_single(b);
+		r = vec3_value(k == KW_MIN_EXTENT ? b.lo : b.hi, at);
 		break;
 	}
 	case KW_TRACE: return f_trace(p, at);

@@ -288,6 +288,18 @@ struct aabb object_world_bounds(const struct object *o)
 	return b;
 }
 
+struct aabb object_box_single(struct aabb b)
+{
+	double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
+	for (int i = 0; i < 3; i++) {
+		double l = fmax(fmin(lo[i], 1e10), -1e10), h = fmax(fmin(hi[i], 1e10), -1e10);
+		float lf = (float)l;
+		lo[i] = lf;
+		hi[i] = (float)(lf + (float)(h - l));
+	}
+	return (struct aabb){{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+}
+
 bool object_ray_meets_box(struct aabb b, const struct ray *r, double tmin, double tmax)
 {
 	if (!aabb_is_finite(b))

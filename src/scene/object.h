@@ -155,6 +155,12 @@ bool object_inside(const struct object *o, vec3 p);
  * other half-space for a plane): its surface lies in it, its inside does
  * not (see `loose`). */
 struct aabb object_world_bounds(const struct object *o);
+/* Box b as POV-Ray stores a box: its low corner and its size in single
+ * precision, the high corner their sum rounded to single precision again
+ * (measured: triangle { <0.3,0.1,0.2>, <1,0.5,0.25>, <0.2,0.9,0.3> }
+ * reports y from 0.100000001490 to 0.900000035763). Sides are clamped to
+ * +-1e10 first, POV-Ray's unbounded box. */
+struct aabb object_box_single(struct aabb b);
 /* Does the ray meet box b with tmin <= t <= tmax? (A margin of 1e-9 of
  * the box's size keeps hits on its faces.) An infinite box always meets. */
 bool object_ray_meets_box(struct aabb b, const struct ray *r, double tmin, double tmax);

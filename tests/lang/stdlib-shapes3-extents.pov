@@ -56,3 +56,8 @@ E("Half_Hollowed_Rounded_Cylinder1", Half_Hollowed_Rounded_Cylinder1(3, 1, 0.1, 
 E("Half_Hollowed_Rounded_Cylinder1 flat rim", Half_Hollowed_Rounded_Cylinder1(4, 0.5, 0.2, 0.5, 1))
 E("Half_Hollowed_Rounded_Cylinder2", Half_Hollowed_Rounded_Cylinder2(3, 1, 0.2, 0.1, 1.5, 1))
 E("Half_Hollowed_Rounded_Cylinder2 tall rim", Half_Hollowed_Rounded_Cylinder2(2, 0.6, 0.1, 0.05, 3, 0))
+E("Rounded_Tube_AB slanting", Rounded_Tube_AB(<0,0,0>, <1,2,0.5>, 1, 0.5, 0.1, 0))
+E("Rounded_Tube_AB slanting down", Rounded_Tube_AB(<1,0,2>, <-1,-2,3>, 1, 0.5, 0.1, 0))
+E("Rounded_Tube_AB along x", Rounded_Tube_AB(<0,0,0>, <2,0,0>, 1, 0.5, 0.1, 0))
+E("Rounded_Tube_AB down y", Rounded_Tube_AB(<0,0,0>, <0,-2,0>, 1, 0.5, 0.1, 0))
+E("Rounded_Tube_AB down z", Rounded_Tube_AB(<0,0,0>, <0,0,-2>, 1, 0.5, 0.1, 1))

@@ -343,6 +343,21 @@ static void test_box_parallel(void **state)
 	object_free(b);
 }
 
+/* A box flat along an axis has no inside (POV-Ray gives it the whole
+ * face): subtracting it from a solid whose face it lies on must change
+ * nothing (tests/stability degenerate.pov). */
+static void test_box_flat_has_no_inside(void **state)
+{
+	(void)state;
+	struct object *b = box_new(v3(-1, 0, -1), v3(1, 0, 1), nopos);
+	assert_false(object_inside(b, v3(0, 0, 0)));
+	assert_false(object_inside(b, v3(1, 0, 1)));
+	object_free(b);
+	b = box_new(v3(0.5, 0.5, -1), v3(0.5, 0.5, -1), nopos);
+	assert_false(object_inside(b, v3(0.5, 0.5, -1)));
+	object_free(b);
+}
+
 static void test_box_inside_and_on_surface(void **state)
 {
 	(void)state;
@@ -364,10 +379,13 @@ static void test_box_inside_and_on_surface(void **state)
 	/* On the surface, going out: nothing. */
 	assert_false(hits(b, v3(0, 0, -3), v3(0, 0, -1), 0, INFINITY));
 	assert_false(hits(b, v3(1, 0, 0), v3(1, 0, 0), 0, INFINITY));
-	/* Inside tests are strict. */
+	/* Points on the faces are inside, as in POV-Ray 3.7 (its inside()
+	 * gives 1 at <1,0,0> and <1,1,1> of box { -1, 1 }). */
 	assert_true(object_inside(b, v3(0, 0, 0)));
 	assert_true(object_inside(b, v3(0.99, -1.99, 2.99)));
-	assert_false(object_inside(b, v3(1, 0, 0)));
+	assert_true(object_inside(b, v3(1, 0, 0)));
+	assert_true(object_inside(b, v3(1, -2, 3)));
+	assert_false(object_inside(b, v3(1 + 1e-12, 0, 0)));
 	assert_false(object_inside(b, v3(0, 2.01, 0)));
 	assert_false(object_inside(b, v3(0, 0, -3.5)));
 	/* Bounds are the corners. */
@@ -812,6 +830,7 @@ int main(void)
 		cmocka_unit_test(test_box_hit_miss),
 		cmocka_unit_test(test_box_parallel),
 		cmocka_unit_test(test_box_inside_and_on_surface),
+		cmocka_unit_test(test_box_flat_has_no_inside),
 		cmocka_unit_test(test_transform_translate),
 		cmocka_unit_test(test_transform_nonuniform_scale),
 		cmocka_unit_test(test_transform_rotate),

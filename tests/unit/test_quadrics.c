@@ -489,9 +489,10 @@ static void test_disc(void **state)
 	assert_int_equal(all(d, v3(1.5, 5, 0), dy, 0, INFINITY, out, 2), 1);
 	assert_near(out[0].t, 4, 0);
 	assert_int_equal(all(d, v3(1.5, 5, 0), dy, 0, INFINITY, out, 0), 0);
+	/* POV-Ray's box is 0.001 thicker each way across the disc. */
 	struct aabb b = object_world_bounds(d);
-	assert_vec_near(b.lo, -5, 1, -5, 0);
-	assert_vec_near(b.hi, 5, 1, 5, 0);
+	assert_vec_near(b.lo, -5, 0.999, -5, 1e-15);
+	assert_vec_near(b.hi, 5, 1.001, 5, 1e-15);
 	object_free(d);
 }
 
@@ -508,9 +509,13 @@ static void test_disc_tilted_and_degenerate(void **state)
 	assert_near(h.t, 4, 1e-15);
 	/* At distance sqrt(1.5^2 + 1.5^2 + 1.5^2) > 2 from the centre: a miss. */
 	assert_false(hits(d, v3(-5, 1.5, 1.5), v3(1, 0, 0), 0, INFINITY));
+	/* POV-Ray's box: [-2,2]^2 x [-0.001,0.001] in the frame taking z to
+	 * minus the normal, whose x' and y' are (1/2, -1/2, -1/sqrt 2) and
+	 * (-1/2, 1/2, -1/sqrt 2): looser than the ring's own box. */
 	struct aabb b = object_world_bounds(d);
-	assert_vec_near(b.lo, -sqrt(2), -sqrt(2), -2, 1e-15);
-	assert_vec_near(b.hi, sqrt(2), sqrt(2), 2, 1e-15);
+	double e = 2 + 0.001 * sqrt(0.5);
+	assert_vec_near(b.lo, -e, -e, -2 * sqrt(2), 1e-15);
+	assert_vec_near(b.hi, e, e, 2 * sqrt(2), 1e-15);
 	assert_true(object_inside(d, v3(-1, 0, 7)));
 	object_free(d);
 	/* Transformed: scaled <1,1,3> and moved; the rim stretches in z. */
@@ -522,8 +527,8 @@ static void test_disc_tilted_and_degenerate(void **state)
 	assert_vec_near(hit_normal(d, v3(0, 5, 2.9), v3(0, -1, 0), &h), 0, 1, 0, 0);
 	assert_false(hits(d, v3(0, 5, 3.1), v3(0, -1, 0), 0, INFINITY));
 	b = object_world_bounds(d);
-	assert_vec_near(b.lo, -1, 2, -3, 0);
-	assert_vec_near(b.hi, 1, 2, 3, 0);
+	assert_vec_near(b.lo, -1, 1.999, -3, 1e-15);
+	assert_vec_near(b.hi, 1, 2.001, 3, 1e-15);
 	assert_true(object_inside(d, v3(0, 1.9, 0)));
 	object_free(d);
 	/* Hole as large as the disc, zero radius: nothing to hit. */
@@ -973,9 +978,10 @@ static void test_se_inside_surface_bounds(void **state)
 	assert_false(object_inside(s, v3(1 + 1e-9, 0, 0)));
 	assert_false(object_inside(s, v3(0.9, 0.9, 0.9)));
 	assert_true(object_inside(s, v3(0.7, 0.7, 0)));
+	/* POV-Ray's box: the cube widened by 1e-4. */
 	struct aabb b = object_world_bounds(s);
-	assert_vec_near(b.lo, -1, -1, -1, 0);
-	assert_vec_near(b.hi, 1, 1, 1, 0);
+	assert_vec_near(b.lo, -1.0001, -1.0001, -1.0001, 0);
+	assert_vec_near(b.hi, 1.0001, 1.0001, 1.0001, 0);
 	/* all_hits honours max and the range. */
 	struct hit out[4];
 	assert_int_equal(all(s, v3(0, 0.3, -5), v3(0, 0, 1), 0, INFINITY, out, 4), 2);
@@ -992,8 +998,8 @@ static void test_se_inside_surface_bounds(void **state)
 	assert_near(h.t, 3, 1e-14);
 	assert_vec_near(hit_normal(s, v3(-5, 10, 0), v3(1, 0, 0), &h), -1, 0, 0, 1e-14);
 	b = object_world_bounds(s);
-	assert_vec_near(b.lo, -2, 8, -2, 0);
-	assert_vec_near(b.hi, 2, 12, 2, 0);
+	assert_vec_near(b.lo, -2.0002, 7.9998, -2.0002, 1e-14);
+	assert_vec_near(b.hi, 2.0002, 12.0002, 2.0002, 1e-14);
 	assert_true(object_inside(s, v3(1.9, 10, 0)));
 	object_free(s);
 	/* Out-of-range exponents are raised to the minimum: a finite shape. */

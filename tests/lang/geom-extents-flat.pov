@@ -1,0 +1,48 @@
+// checks min_extent/max_extent of superellipsoid, disc, polygon, triangle and text, as
+// POV-Ray 3.7 gives them: a superellipsoid's cube widened by 1e-4; a disc's [-r,r]^2 x
+// [-0.001,0.001] carried by the frame taking z to minus its normal; a polygon's and a
+// triangle's points carried by the transform (a polygon's sides under 0.001 widened by
+// 0.001, a triangle's box by 1e-10: -0.000000); text's box 1e-6 deeper, turned by
+// rotate <0.001,0.001,0.001>, then moved as a box. (A transformed smooth_triangle is left
+// out: POV-Ray reports its untransformed box, see doc/objects.md.)
+#version 3.7;
+#macro P(N, O) #debug concat(N, " ", vstr(3, min_extent(O), ",", 0, 6), "  ", vstr(3, max_extent(O), ",", 0, 6), "\n") #end
+P("se", superellipsoid { <0.5,0.5> })
+P("se-s", superellipsoid { <1,0.3> scale <1,2,3> })
+P("se-t", superellipsoid { <0.5,0.5> translate <1,2,3> })
+P("se-r2", superellipsoid { <0.5,0.5> scale 2 rotate <20,30,40> translate 1 })
+P("disc", disc { 0, y, 1 })
+P("disc-z", disc { <1,2,3>, -z, 2 })
+P("disc-x", disc { 0, x, 1 })
+P("disc-111", disc { <1,2,3>, <1,1,1>, 1, 0.5 })
+P("disc-123", disc { <1,2,3>, <1,2,3>, 1 })
+P("disc--12-3", disc { <1,2,3>, <-1,2,-3>, 1 })
+P("disc-1-23", disc { <1,2,3>, <1,-2,3>, 2, 1 })
+P("disc-r", disc { 0, y, 1 rotate <20,30,40> })
+P("poly", polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> })
+P("poly-r", polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> rotate <20,30,40> })
+P("poly-t", polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> translate <1,2,3> })
+P("poly-s", polygon { 4, <0,0>, <1,0>, <1,1>, <0,1> scale 10 })
+P("poly-3d", polygon { 4, <0,0,0>, <1,0,1>, <1,1,1>, <0,1,0> })
+P("poly-0.00099", polygon { 4, <0,0,0>, <1,0,0.00099>, <1,1,0.00099>, <0,1,0> })
+P("poly-0.001", polygon { 4, <0,0,0>, <1,0,0.001>, <1,1,0.001>, <0,1,0> })
+P("poly-0.002", polygon { 4, <0,0,0>, <1,0,0.002>, <1,1,0.002>, <0,1,0> })
+P("poly-tri-r", polygon { 3, <0,0>, <1,0>, <0,1> rotate <20,30,40> })
+P("poly-tri-sk", polygon { 3, <0,0,0>, <1,0,0.0005>, <0,1,0> rotate <0,0,40> })
+P("poly-tri-sq", polygon { 3, <0,0,0>, <1,0,0>, <0,1,0> scale <1,1e-4,1> rotate 90*x })
+P("tri", triangle { 0, x, y })
+P("tri-r", triangle { 0, x, y rotate <20,30,40> })
+P("tri-s", triangle { 0, x, y scale <1,2,3> })
+P("tri-t", triangle { 0, x, y translate <1,2,3> })
+P("tri-90", triangle { 0, x, y rotate 90*y })
+P("stri", smooth_triangle { 0, y, x, y, y, y })
+P("text", text { ttf "timrom.ttf" "Hi" 1, 0 })
+P("text-I2", text { ttf "timrom.ttf" "I" 2, 0 })
+P("text-g", text { ttf "timrom.ttf" "g" 1, 0 })
+P("text-W", text { ttf "timrom.ttf" "W" 1, 0 })
+P("text-sp", text { ttf "timrom.ttf" " " 1, 0 })
+P("text-r", text { ttf "timrom.ttf" "Hi" 1, 0 rotate <0,0,30> })
+P("text-rx", text { ttf "timrom.ttf" "Hi" 1, 0 rotate <20,0,0> })
+P("text-t", text { ttf "timrom.ttf" "Hi" 1, 0 translate <1,2,3> })
+P("text-o", text { ttf "timrom.ttf" "Hi" 0.5, <0.1,0.2,0> })
+P("union", union { disc { 0, y, 1 } triangle { 0, x, y } })
