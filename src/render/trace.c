@@ -165,7 +165,7 @@ static const struct pattern_ctx *ctx_for(const struct surface *s, const struct p
  * shade_dispersion_hue; 0 for light that is not dispersed). */
 static double interior_ior(const struct interior *in, double hue)
 {
-	return hue != 0 && in->dispersion != 1 ? in->ior * pow(in->dispersion, hue) : in->ior;
+	return hue != 0 && interior_dispersion(in) != 1 ? in->ior * pow(in->dispersion, hue) : in->ior;
 }
 
 /* The ior of the innermost interior of m (air: 1) for the ray that
@@ -516,7 +516,7 @@ static rgb exit_fade(const struct prepared *p, const struct surface *s)
  * their ior at its hue. So a ray splits once, not at every surface. */
 static bool disperses(const struct prepared *p, const struct surface *s)
 {
-	return (p->features & FEAT_DISPERSION) && s->in->dispersion != 1 && !(s->med && s->med->dispersed);
+	return (p->features & FEAT_DISPERSION) && interior_dispersion(s->in) != 1 && !(s->med && s->med->dispersed);
 }
 
 /* Is the transmitted ray through s, across normal n into medium `after`,

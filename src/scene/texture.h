@@ -118,6 +118,7 @@ struct finish finish_default(void);
 struct interior {
 	int refs;
 	double ior;                  /* 1 */
+	bool ior_given;              /* ior written out (see interior_dispersion) */
 	double caustics;             /* 0 */
 	double dispersion;           /* 1 */
 	int dispersion_samples;      /* 7 */
@@ -130,6 +131,15 @@ struct interior *interior_new(void);
 struct interior *interior_ref(struct interior *i);
 void interior_unref(struct interior *i);
 struct interior *interior_copy(const struct interior *i);
+
+/* The dispersion that applies in interior i: POV-Ray 3.7 disperses only
+ * where the interior's ior is written out, even as `ior 1` (measured:
+ * `interior { dispersion 1.3 }` alone, or with a pre-3.1 `finish { ior }`,
+ * renders as if without dispersion). */
+static inline double interior_dispersion(const struct interior *i)
+{
+	return i->ior_given ? i->dispersion : 1.0;
+}
 
 /* ---- texture ---- */
 
