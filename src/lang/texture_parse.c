@@ -710,6 +710,7 @@ struct blend_map *parse_map_value(struct parser *p)
 static void texture_uv_mapping(struct texture **tex)
 {
 	struct texture *t = own_texture(tex);
+	t->uv_mapped = true;
 	if (t->kind != TEX_PLAIN) {
 		t->pat.uv_mapping = true;
 		return;
@@ -943,6 +944,8 @@ static struct texture *read_layers(struct parser *p, struct texture *under, enum
 
 struct texture *parse_private_texture(struct parser *p, struct texture **tex)
 {
+	if (*tex && texture_is_patterned(*tex))
+		parse_error(p, "cannot layer a %s over a patterned texture", kw_names[parse_peek(p)->kw]);
 	if (!*tex)
 		*tex = default_texture(p);
 	else
@@ -964,13 +967,16 @@ void parse_texture(struct parser *p, struct texture **tex)
  * statements on one object are in POV-Ray. */
 void parse_texture_layer(struct parser *p, struct texture **tex)
 {
-	if (*tex && (*tex)->kind != TEX_PLAIN)
+	if (*tex && texture_is_patterned(*tex))
 		parse_error(p, "cannot layer a texture over a patterned texture");
+	struct srcpos at = parse_peek(p)->pos;
 	struct texture *t = NULL;
 	struct texture **h = holder_new(sizeof *h);
 	int slot = parse_own(p, h, parse_free_texture_holder);
 	parse_texture(p, h);
 	t = *h;
+	if (*tex && texture_is_patterned(t))
+		parse_error_at(p, at, "cannot layer a patterned texture over another texture");
 	*h = NULL;
 	parse_release(p, slot);
 	free(h);

@@ -158,7 +158,18 @@ struct texture {
 	struct pattern pat;          /* PATTERNED, MATERIAL */
 	struct blend_map *map;       /* PATTERNED, MATERIAL: MAP_TEXTURE */
 	struct texture *next;        /* layered textures: the layer under this one (one reference), or NULL */
+	bool uv_mapped;              /* texture { uv_mapping }: layered on as if patterned (texture_is_patterned) */
 };
+
+/* Does POV-Ray 3.7 count the top layer of t as patterned, so that nothing
+ * can be layered over it (texture, pigment, normal or finish) and it over
+ * nothing? Block patterns, texture and material maps, and a texture-level
+ * uv_mapping (measured: `texture { uv_mapping pigment { rgb 1 } }` then
+ * `finish { }` is POV-Ray's "Cannot layer over a patterned texture"). */
+static inline bool texture_is_patterned(const struct texture *t)
+{
+	return t->kind != TEX_PLAIN || t->uv_mapped;
+}
 
 /* A new plain texture with POV-Ray's defaults (black pigment, default
  * finish), holding one reference. */
