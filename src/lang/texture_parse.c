@@ -281,6 +281,7 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 	}
 	uv |= read_uv_prefix(p);
 	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
+	bool leading = true;    /* nothing read yet but the identifier */
 	for (;;) {
 		if (in_object && parse_accept(p, TOK_RBRACE)) {
 			in_object = false;
@@ -291,6 +292,8 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			parse_advance(p);
 			break;
 		}
+		bool first = leading;
+		leading = false;
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -325,6 +328,16 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 		}
 		if (parse_starts_expression(p)) {
 			struct pigment *pg = own_pigment(pig);
+			if (first && pg->kind != PIGMENT_SOLID) {
+				/* A colour first makes the pigment that colour, whatever
+				 * it was (POV-Ray 3.7: `pigment { checker } pigment { rgb
+				 * <1, 0, 0> }` is plain red). */
+				blend_map_unref(pg->map);
+				pg->map = NULL;
+				pattern_clear(&pg->pat);
+				pg->kind = PIGMENT_SOLID;
+				pg->quick = false;
+			}
 			if (pg->kind == PIGMENT_SOLID) {
 				pg->color = parse_color(p);
 				continue;
