@@ -281,6 +281,7 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 	}
 	uv |= read_uv_prefix(p);
 	bool in_object = false; /* inside object { OBJ ... }: its list, then '}' */
+	bool leading = true;    /* nothing read yet but the identifier */
 	for (;;) {
 		if (in_object && parse_accept(p, TOK_RBRACE)) {
 			in_object = false;
@@ -291,6 +292,8 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 			parse_advance(p);
 			break;
 		}
+		bool first = leading;
+		leading = false;
 		const struct token *t = parse_peek(p);
 		struct xform xf;
 		enum pattern_kind pk;
@@ -333,6 +336,16 @@ static void pigment_body(struct parser *p, struct pigment **pig, enum tok_kind e
 		}
 		if (parse_starts_expression(p)) {
 			struct pigment *pg = own_pigment(pig);
+			if (first && pg->kind != PIGMENT_SOLID) {
+				/* A colour first makes the pigment that colour, whatever
+				 * it was (POV-Ray 3.7: `pigment { checker } pigment { rgb
+				 * <1, 0, 0> }` is plain red). */
+				blend_map_unref(pg->map);
+				pg->map = NULL;
+				pattern_clear(&pg->pat);
+				pg->kind = PIGMENT_SOLID;
+				pg->quick = false;
+			}
 			if (pg->kind == PIGMENT_SOLID) {
 				pg->color = parse_color(p);
 				continue;
@@ -718,6 +731,7 @@ struct blend_map *parse_map_value(struct parser *p)
 static void texture_uv_mapping(struct texture **tex)
 {
 	struct texture *t = own_texture(tex);
+	t->uv_mapped = true;
 	if (t->kind != TEX_PLAIN) {
 		t->pat.uv_mapping = true;
 		return;
@@ -951,6 +965,8 @@ static struct texture *read_layers(struct parser *p, struct texture *under, enum
 
 struct texture *parse_private_texture(struct parser *p, struct texture **tex)
 {
+	if (*tex && texture_is_patterned(*tex))
+		parse_error(p, "cannot layer a %s over a patterned texture", kw_names[parse_peek(p)->kw]);
 	if (!*tex)
 		*tex = default_texture(p);
 	else
@@ -972,13 +988,16 @@ void parse_texture(struct parser *p, struct texture **tex)
  * statements on one object are in POV-Ray. */
 void parse_texture_layer(struct parser *p, struct texture **tex)
 {
-	if (*tex && (*tex)->kind != TEX_PLAIN)
+	if (*tex && texture_is_patterned(*tex))
 		parse_error(p, "cannot layer a texture over a patterned texture");
+	struct srcpos at = parse_peek(p)->pos;
 	struct texture *t = NULL;
 	struct texture **h = holder_new(sizeof *h);
 	int slot = parse_own(p, h, parse_free_texture_holder);
 	parse_texture(p, h);
 	t = *h;
+	if (*tex && texture_is_patterned(t))
+		parse_error_at(p, at, "cannot layer a patterned texture over another texture");
 	*h = NULL;
 	parse_release(p, slot);
 	free(h);

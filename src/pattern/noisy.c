@@ -334,9 +334,7 @@ static vec3 unit_or(vec3 v, vec3 fallback)
 	return l > 0 ? v3_scale(v, 1.0 / l) : fallback;
 }
 
-/* A world-space normal carried into pattern space through the pattern's
- * transformations (the warps leave it alone), and back. */
-static vec3 normal_to_pattern(const struct pattern *pt, vec3 n)
+vec3 pattern_normal_in(const struct pattern *pt, vec3 n)
 {
 	for (int i = pt->nops - 1; i >= 0; i--)
 		if (pt->ops[i].kind == POP_TRANSFORM)
@@ -344,12 +342,20 @@ static vec3 normal_to_pattern(const struct pattern *pt, vec3 n)
 	return n;
 }
 
-static vec3 normal_from_pattern(const struct pattern *pt, vec3 n)
+vec3 pattern_normal_out(const struct pattern *pt, vec3 n)
 {
 	for (int i = 0; i < pt->nops; i++)
 		if (pt->ops[i].kind == POP_TRANSFORM)
 			n = mat_normal(&pt->ops[i].xf.inv, n);
 	return n;
+}
+
+vec3 pattern_dir_out(const struct pattern *pt, vec3 d)
+{
+	for (int i = 0; i < pt->nops; i++)
+		if (pt->ops[i].kind == POP_TRANSFORM)
+			d = mat_dir(&pt->ops[i].xf.fwd, d);
+	return d;
 }
 
 bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec3 n,
@@ -414,8 +420,8 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		return false;
 	}
 	/* The push is added in pattern space, along n too (measured, kinds.h). */
-	vec3 np = unit_or(normal_to_pattern(pt, n), n);
-	vec3 m = normal_from_pattern(pt, v3_add(np, d));
+	vec3 np = unit_or(pattern_normal_in(pt, n), n);
+	vec3 m = pattern_normal_out(pt, v3_add(np, d));
 	*out = unit_or(m, n);
 	return true;
 }

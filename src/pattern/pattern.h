@@ -178,9 +178,21 @@ vec3 pattern_point(const struct pattern *pt, vec3 p);
 /* The same with the scene's noise generator (ctx->noise_generator) for
  * the turbulence warps, where the pattern has none of its own. */
 vec3 pattern_point_ctx(const struct pattern *pt, vec3 p, const struct pattern_ctx *ctx);
+/* A world-space normal carried into pattern space through the pattern's
+ * transformations (the warps leave it alone), and a pattern-space normal
+ * back (neither made unit); a pattern-space direction carried to world
+ * space. */
+vec3 pattern_normal_in(const struct pattern *pt, vec3 n);
+vec3 pattern_normal_out(const struct pattern *pt, vec3 n);
+vec3 pattern_dir_out(const struct pattern *pt, vec3 d);
 /* The pattern's value at ctx: an index for block patterns, [0, 1] for the
  * others (after frequency, phase and wave type). */
 double pattern_value(const struct pattern *pt, const struct pattern_ctx *ctx);
+/* pattern_value at world point p with the point moved by off in pattern
+ * space, after the transformations and warps, the classic turbulence of
+ * the kinds that warp the point with it included (the numerical slope of
+ * normals samples there). */
+double pattern_value_moved(const struct pattern *pt, vec3 p, vec3 off, const struct pattern_ctx *ctx);
 /* Frequency, phase and the wave type applied to a raw value v of pt's
  * kind (what pattern_value does after pattern_raw for continuous kinds). */
 double pattern_wave(const struct pattern *pt, double v);

@@ -193,3 +193,16 @@ vec3 pattern_point_ctx(const struct pattern *pt, vec3 p, const struct pattern_ct
 {
 	return carry(pt, p, ctx && ctx->noise_generator ? ctx->noise_generator : 2);
 }
+
+double pattern_value_moved(const struct pattern *pt, vec3 p, vec3 off, const struct pattern_ctx *ctx)
+{
+	int generator = pt->noise_generator ? pt->noise_generator
+	              : ctx && ctx->noise_generator ? ctx->noise_generator : 2;
+	for (int i = pt->nops - 1; i >= 0; i--)
+		p = apply_op(&pt->ops[i], p, generator);
+	if (pt->has_turbulence && !turbulence_in_value(pt->kind))
+		p = v3_add(p, v3_mul(pt->turb.amount, turbulence3(p, &pt->turb, generator)));
+	p = v3_add(p, off);
+	double v = pattern_raw(pt, p, ctx);
+	return pattern_is_block(pt->kind) ? v : pattern_wave(pt, v);
+}

@@ -141,7 +141,7 @@ static unsigned object_features(struct object *o, bool *caster)
 			f |= FEAT_REFRACTION;
 		if (in->fade_distance > 0 && in->fade_power > 0)
 			f |= FEAT_FADE;
-		if (in->dispersion != 1)
+		if (interior_dispersion(in) != 1)
 			f |= FEAT_DISPERSION;
 		if (in->caustics > 0)
 			f |= FEAT_CAUSTICS;

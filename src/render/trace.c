@@ -168,7 +168,7 @@ static const struct pattern_ctx *ctx_for(const struct surface *s, const struct p
  * shade_dispersion_hue; 0 for light that is not dispersed). */
 static double interior_ior(const struct interior *in, double hue)
 {
-	return hue != 0 && in->dispersion != 1 ? in->ior * pow(in->dispersion, hue) : in->ior;
+	return hue != 0 && interior_dispersion(in) != 1 ? in->ior * pow(in->dispersion, hue) : in->ior;
 }
 
 /* The ior of the innermost interior of m (air: 1) for the ray that
@@ -486,11 +486,18 @@ struct layer {
 	vec3 n;         /* the (perturbed) normal, facing the ray */
 	rgb above;      /* what the layers above let through */
 	rgb refl;       /* the reflection colour at this angle (before exponent) */
+	double refl_w;  /* the reflected ray's share for adc_bailout (reflection_color) */
 };
 
 /* The reflection colour of finish f at a view whose incidence cosine is
- * cv, for pigment pig; n_rel is the relative ior for fresnel. */
-static rgb reflection_color(const struct finish *f, rgb pig, double cv, double n_rel)
+ * cv, for pigment pig; n_rel is the relative ior for fresnel. *w gets the
+ * share of the reflected ray that POV-Ray 3.7 weighs against adc_bailout
+ * (measured by bisecting adc_bailout on a mirror at normal incidence):
+ * with fresnel, the largest channel of the reflection at this angle
+ * before metallic; otherwise the largest channel of the minimum and the
+ * maximum reflection, whatever the angle and metallic ({0.1, 0.6} weighs
+ * 0.6 where it reflects 0.1). */
+static rgb reflection_color(const struct finish *f, rgb pig, double cv, double n_rel, double *w)
 {
 	rgb lo = f->reflection_min, hi = f->reflection_max;
 	double k;
@@ -499,6 +506,7 @@ static rgb reflection_color(const struct finish *f, rgb pig, double cv, double n
 	else
 		k = f->reflection_falloff == 1 ? 1 - cv : pow(1 - cv, f->reflection_falloff);
 	rgb r = rgb_add(lo, rgb_scale(rgb_add(hi, rgb_scale(lo, -1)), k));
+	*w = f->reflection_fresnel ? rgb_max(r) : fmax(rgb_max(lo), rgb_max(hi));
 	if (f->reflection_metallic > 0)
 		r = rgb_mul(r, shade_metallic(pig, f->reflection_metallic, cv));
 	return r;
@@ -547,7 +555,7 @@ static rgb exit_fade(const struct prepared *p, const struct surface *s)
  * their ior at its hue. So a ray splits once, not at every surface. */
 static bool disperses(const struct prepared *p, const struct surface *s)
 {
-	return (p->features & FEAT_DISPERSION) && s->in->dispersion != 1 && !(s->med && s->med->dispersed);
+	return (p->features & FEAT_DISPERSION) && interior_dispersion(s->in) != 1 && !(s->med && s->med->dispersed);
 }
 
 /* Is the transmitted ray through s, across normal n into medium `after`,
@@ -694,8 +702,9 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			y->n = normal_eval(pl->normal, s->n, ctx_for(s, &pl->normal->pat));
 		y->above = filt;
 		y->refl = rgb_make(0, 0, 0);
+		y->refl_w = 0;
 		if ((feat & FEAT_REFLECTION) && (rgb_max(y->fin->reflection_max) > 0 || rgb_max(y->fin->reflection_min) > 0))
-			y->refl = reflection_color(y->fin, y->pig, fabs(v3_dot(s->dir, y->n)), n_rel);
+			y->refl = reflection_color(y->fin, y->pig, fabs(v3_dot(s->dir, y->n)), n_rel, &y->refl_w);
 		back_wanted |= y->fin->diffuse_back != 0;
 		rgb lf = layer_filter(c);
 		if (y->fin->conserve_energy)
@@ -752,10 +761,32 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 
 	if (s->depth < p->max_depth) {
 		double bail = sc->gs.adc_bailout;
+		/* POV-Ray 3.7 transmits a ray where both the grey of what the
+		 * layers let through (filt, with conserve_energy's share) and the
+		 * ray's weight times filt's largest channel reach adc_bailout; the
+		 * latter is the transmitted ray's weight. Measured by bisecting
+		 * adc_bailout behind one and two nested filtering boxes: rgbf
+		 * <0.5, 1, 0.2, 0.6> alone weighs 0.456 (its grey), twice 0.36;
+		 * white filter 0.9 then <0.5, 1, 0.2, 0.9> weighs 0.684, the
+		 * second's grey not scaled by the first. */
+		double tw = weight * rgb_max(filt);
 		/* Quality below 6 transmits no ray (prepare_quality). */
-		bool transmits = (feat & FEAT_TRANSPARENCY) && p->quality >= 6 && rgb_max(filt) > 0 &&
-		                 weight * rgb_max(filt) >= bail;
-		if (transmits && total_internal(p, s, L[0].n, &after)) {
+		bool passes = (feat & FEAT_TRANSPARENCY) && p->quality >= 6 && rgb_max(filt) > 0 && gray_of(filt) >= bail;
+		bool transmits = passes && tw >= bail;
+		bool tir = passes && total_internal(p, s, L[0].n, &after);
+		if (tir && !transmits) {
+			/* Totally reflected light too weak to follow: where the grey
+			 * passes, POV-Ray traces no reflection either (measured in a
+			 * prism of filter 0.5 and reflection 0.9: at adc_bailout 0.3
+			 * the object the mirrored ray would reach is not seen). Where
+			 * the grey fails, the finish's reflection is traced as on an
+			 * opaque surface (measured: with conserve_energy and fresnel
+			 * reflection, whole under total reflection, the object comes
+			 * back at higher adc_bailout, by the reflection). */
+			tr->transmit = 0;
+			return col;
+		}
+		if (transmits && tir) {
 			/* Total internal reflection: POV-Ray then traces the mirrored
 			 * ray alone and adds it whole, neither filtered by the pigment
 			 * nor joined by the finish's reflection (measured from inside
@@ -767,16 +798,16 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 			 * mirror behind the reflection and adc_bailout 0.1 to 0.3). */
 			struct ray r = {v3_madd(s->pt, L[0].n, s->eps), v3_reflect(s->dir, L[0].n)};
 			bool any;
-			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, weight * rgb_max(filt), s->med, &any);
+			rgb c = trace_ray_in(tr, &r, s->depth + 1, RAY_REFLECTED, tw, s->med, &any);
 			tr->transmit = 0; /* a reflected ray passes nothing on */
 			return rgb_add(col, rgb_mul(c, exit_fade(p, s)));
 		}
 		for (int i = 0; i < nl; i++) {
 			const struct layer *y = &L[i];
-			double w = weight * rgb_max(y->refl);
+			double w = weight * y->refl_w;
 			/* POV-Ray traces a ray whose weight equals adc_bailout
 			 * (measured: reflection 0.2 shows at adc_bailout 0.2). */
-			if (w < bail || w <= 0)
+			if (w < bail || w <= 0 || rgb_max(y->refl) <= 0)
 				continue;
 			struct ray rr = {v3_madd(s->pt, s->n, s->eps), v3_reflect(s->dir, y->n)};
 			bool any;
@@ -788,7 +819,7 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		}
 		double through = 0;
 		if (transmits) {
-			rgb c = transmit(tr, s, L[0].n, weight * rgb_max(filt), &after);
+			rgb c = transmit(tr, s, L[0].n, tw, &after);
 			col = rgb_add(col, rgb_mul(rgb_mul(filt, c), exit_fade(p, s)));
 			through = tpass * tr->transmit;
 		}

@@ -15,8 +15,8 @@
  *   - f_mesh1 matches for positive thread spacings only.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
- * stdlib-functions-noise); f_ridged_mf (for most parameters) has POV-Ray's
- * range and character but not its values.
+ * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
+ * its first call: see there).
  *
  * Conventions that many functions share:
  *   - "field strength" functions return P0 times a polynomial, clamped to
@@ -920,15 +920,26 @@ static double f_ridge(const double *a)
 }
 
 /* Musgrave's ridged multifractal: P0 H, P1 lacunarity, P2 octaves, P3
- * offset, P4 gain, P5 generator. */
+ * offset, P4 gain, P5 generator. Octave i (from 0) counts while i <
+ * octaves, so a fractional count rounds up (measured: 2.5 octaves give
+ * the value of 3, 0.5 that of 1).
+ *
+ * POV-Ray 3.7 computes the octaves' weights lac^(-iH) once, at the first
+ * call of f_ridged_mf in a run, for that call's H, lacunarity and octave
+ * count, and reuses them in every later call (measured: after a first call
+ * with H 0.2 and lacunarity 2.5, a call with 0.5 and 2 weighs its second
+ * octave by 2.5^-0.2; weights beyond the first call's count read zero or
+ * garbage). lucent computes them for each call, which is POV-Ray's value
+ * wherever the scene calls it with one H and lacunarity and no more
+ * octaves than its first call has (tests/lang/stdlib-functions-ridged). */
 static double f_ridged_mf(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
 	double H = a[3], lac = a[4], oct = a[5], off = a[6], gain = a[7];
-	int gen = to_int(a[8], 1 << 20), octaves = to_int(oct, 64);
+	int gen = to_int(a[8], 1 << 20);
 	double sig = sq(off - fabs(snoise(x, y, z, gen)));
 	double v = sig, freq = 1;
-	for (int i = 1; i < octaves; i++) {
+	for (int i = 1; i < oct && i < 64; i++) {
 		x *= lac;
 		y *= lac;
 		z *= lac;

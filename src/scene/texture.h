@@ -118,6 +118,7 @@ struct finish finish_default(void);
 struct interior {
 	int refs;
 	double ior;                  /* 1 */
+	bool ior_given;              /* ior written out (see interior_dispersion) */
 	double caustics;             /* 0 */
 	double dispersion;           /* 1 */
 	int dispersion_samples;      /* 7 */
@@ -130,6 +131,15 @@ struct interior *interior_new(void);
 struct interior *interior_ref(struct interior *i);
 void interior_unref(struct interior *i);
 struct interior *interior_copy(const struct interior *i);
+
+/* The dispersion that applies in interior i: POV-Ray 3.7 disperses only
+ * where the interior's ior is written out, even as `ior 1` (measured:
+ * `interior { dispersion 1.3 }` alone, or with a pre-3.1 `finish { ior }`,
+ * renders as if without dispersion). */
+static inline double interior_dispersion(const struct interior *i)
+{
+	return i->ior_given ? i->dispersion : 1.0;
+}
 
 /* ---- texture ---- */
 
@@ -148,7 +158,18 @@ struct texture {
 	struct pattern pat;          /* PATTERNED, MATERIAL */
 	struct blend_map *map;       /* PATTERNED, MATERIAL: MAP_TEXTURE */
 	struct texture *next;        /* layered textures: the layer under this one (one reference), or NULL */
+	bool uv_mapped;              /* texture { uv_mapping }: layered on as if patterned (texture_is_patterned) */
 };
+
+/* Does POV-Ray 3.7 count the top layer of t as patterned, so that nothing
+ * can be layered over it (texture, pigment, normal or finish) and it over
+ * nothing? Block patterns, texture and material maps, and a texture-level
+ * uv_mapping (measured: `texture { uv_mapping pigment { rgb 1 } }` then
+ * `finish { }` is POV-Ray's "Cannot layer over a patterned texture"). */
+static inline bool texture_is_patterned(const struct texture *t)
+{
+	return t->kind != TEX_PLAIN || t->uv_mapped;
+}
 
 /* A new plain texture with POV-Ray's defaults (black pigment, default
  * finish), holding one reference. */
