@@ -24,24 +24,6 @@
 
 static const struct srcpos nopos = {0, 0, 0};
 
-/* The ray's hit point, which must match p to 1e-9, and the unit normal
- * there, which must match n to 1e-9. */
-static void check_hit(const struct object *o, vec3 org, vec3 dir, vec3 p, vec3 n)
-{
-	struct hit h = must_hit(o, org, dir, 0);
-	vec3 q = v3_madd(org, dir, h.t);
-	assert_vec_near(q, p.x, p.y, p.z, 1e-9);
-	vec3 m = hit_normal(o, org, dir, &h);
-	assert_vec_near(m, n.x, n.y, n.z, 1e-9);
-}
-
-static void check_box(const struct object *o, vec3 lo, vec3 hi)
-{
-	struct aabb b = object_world_bounds(o);
-	assert_vec_near(b.lo, lo.x, lo.y, lo.z, 5e-7);
-	assert_vec_near(b.hi, hi.x, hi.y, hi.z, 5e-7);
-}
-
 /* One sphere: the surface where (1 - d^2)^2 = 0.5, and POV-Ray's depth
  * tolerance of 0.01 along the world ray. */
 static void test_single(void **state)

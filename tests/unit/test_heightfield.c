@@ -43,15 +43,6 @@ static double fc(double x, double y) { (void)x; (void)y; return 0.3; }
 static double fcorner(double x, double y) { return (x >= 0.5 && y < 0.5) ? 1 : 0; }
 static double fwrap(double x, double y) { (void)y; return 1.5 * x - 0.2; }
 
-static void check_hit(const struct object *o, vec3 org, vec3 dir, vec3 p, vec3 n)
-{
-	struct hit h = must_hit(o, org, dir, 0);
-	vec3 q = v3_madd(org, dir, h.t);
-	assert_vec_near(q, p.x, p.y, p.z, 1e-9);
-	vec3 m = hit_normal(o, org, dir, &h);
-	assert_vec_near(m, n.x, n.y, n.z, 1e-9);
-}
-
 static void test_function_fields(void **state)
 {
 	(void)state;

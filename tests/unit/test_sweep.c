@@ -36,23 +36,6 @@ static struct object *make(enum sweep_spline kind)
 	return o;
 }
 
-/* The ray's hit point and unit normal, each to match to 1e-9. */
-static void check_hit(const struct object *o, vec3 org, vec3 dir, vec3 p, vec3 n)
-{
-	struct hit h = must_hit(o, org, dir, 0);
-	vec3 q = v3_madd(org, dir, h.t);
-	assert_vec_near(q, p.x, p.y, p.z, 1e-9);
-	vec3 m = hit_normal(o, org, dir, &h);
-	assert_vec_near(m, n.x, n.y, n.z, 1e-9);
-}
-
-static void check_box(const struct object *o, vec3 lo, vec3 hi)
-{
-	struct aabb b = object_world_bounds(o);
-	assert_vec_near(b.lo, lo.x, lo.y, lo.z, 5e-7);
-	assert_vec_near(b.hi, hi.x, hi.y, hi.z, 5e-7);
-}
-
 /* linear_spline: the spheres joined by their tangent cones. */
 static void test_linear(void **state)
 {
