@@ -7,6 +7,8 @@
  * tiny image that is never written out. */
 #include "image/framebuffer.h"
 #include "lang/diag.h"
+#include "lang/intern.h"
+#include "lang/lex.h"
 #include "lang/parse.h"
 #include "lang/source.h"
 #include "render/prepare.h"
@@ -30,8 +32,41 @@
  * one-second hang threshold. */
 enum { FUZZ_MAX_STEPS = 5000, FUZZ_MAX_SIZE = 1000000, FUZZ_W = 8, FUZZ_H = 6 };
 
+/* The stdlib's files are read and lexed once, into a source manager kept
+ * across inputs: an input's own files are forgotten after it
+ * (src_truncate), and so are the names it interned (intern_rollback), so
+ * that an input allocates nothing it does not free and libFuzzer's leak
+ * check stays exact. An input that includes a stdlib file after writing
+ * some file reads it afresh, as lucent always does (the file may be the
+ * one it wrote). A stdlib file that does not lex is not kept (an include
+ * of it lexes it, and reports the error, every time). */
 static char fuzz_dir[64], fuzz_scene[96];
 static FILE *fuzz_null;
+static struct srcmgr *fuzz_base;
+static size_t fuzz_base_files;
+
+static void fuzz_base_new(void)
+{
+	fuzz_base = src_new();
+	struct diag diag;
+	diag_init(&diag, fuzz_base, fuzz_null);
+	DIR *d = opendir(FUZZ_STDLIB);
+	if (!d)
+		abort();
+	struct dirent *e;
+	char path[512];
+	while ((e = readdir(d)) != NULL)
+		if (e->d_name[0] != '.') {
+			snprintf(path, sizeof path, "%s/%s", FUZZ_STDLIB, e->d_name);
+			uint32_t file = src_load(fuzz_base, path);
+			if (!file)
+				abort();
+			if (!lex_file(fuzz_base, file, &diag))
+				src_truncate(fuzz_base, file);
+		}
+	closedir(d);
+	fuzz_base_files = fuzz_base->nfiles;
+}
 
 /* Remove what the last input left in the folder (files it wrote). The
  * scene file itself stays, to be overwritten: creating a file costs more
@@ -54,6 +89,8 @@ static void fuzz_clean(void)
 
 static void fuzz_cleanup_dir(void)
 {
+	src_free(fuzz_base);
+	fuzz_base = NULL;
 	fuzz_clean();
 	unlink(fuzz_scene);
 	rmdir(fuzz_dir);
@@ -78,6 +115,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 	fuzz_null = fopen("/dev/null", "w");
 	if (!fuzz_null)
 		abort();
+	fuzz_base_new();
 	return 0;
 }
 
@@ -92,7 +130,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		abort();
 	fclose(f);
 
-	struct srcmgr *sm = src_new();
+	struct srcmgr *sm = fuzz_base;
+	intern_mark(sm->names);
 	struct diag diag;
 	diag_init(&diag, sm, fuzz_null);
 	struct scene *scene = scene_new();
@@ -124,6 +163,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		prepared_free(prep);
 	}
 	scene_free(scene);
-	src_free(sm);
+	src_truncate(sm, fuzz_base_files);
+	intern_rollback(sm->names);
 	return 0;
 }
