@@ -403,7 +403,7 @@ struct value builtin_call(struct parser *p)
 		struct value a = arg_item(p, VAL_ARRAY, name);
 		comma(p);
 		double d = arg_float(p, name);
-		int i = (int)d;
+		int i = parse_int_of(d);
 		r = val_float(i >= 1 && i <= a.arr->ndims ? a.arr->dims[i - 1] : 0, at);
 		parse_drop(p, &a);
 		break;

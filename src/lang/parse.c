@@ -588,6 +588,13 @@ static void consider(void *arg, const char *cand)
 	}
 }
 
+int parse_int_of(double x)
+{
+	if (!(x > -2147483649.0 && x < 2147483648.0))
+		return INT_MIN;
+	return (int)x;
+}
+
 void parse_undefined(struct parser *p, const char *name)
 {
 	size_t len = strlen(name);
