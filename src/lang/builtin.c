@@ -359,7 +359,11 @@ struct value builtin_call(struct parser *p)
 		comma(p);
 		tb.omega = arg_float(p, name);
 		comma(p);
-		tb.octaves = (int)arg_float(p, name);
+		/* POV-Ray computes from 1 to 10 octaves whatever the argument
+		 * (measured: 0 and -5 give 1 octave's value, 11, 100 and 2e9
+		 * the 10th's); 2e9 octaves ran for minutes here. */
+		int oct = parse_int_of(arg_float(p, name));
+		tb.octaves = oct < 1 ? 1 : oct > 10 ? 10 : oct;
 		comma(p);
 		vec3 a = arg_vec3(p, name);
 		tb.amount = v3(1, 1, 1);
@@ -386,7 +390,7 @@ struct value builtin_call(struct parser *p)
 		struct value a = arg_item(p, VAL_ARRAY, name);
 		comma(p);
 		double d = arg_float(p, name);
-		int i = (int)d;
+		int i = parse_int_of(d);
 		r = val_float(i >= 1 && i <= a.arr->ndims ? a.arr->dims[i - 1] : 0, at);
 		parse_drop(p, &a);
 		break;

@@ -698,9 +698,11 @@ static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 		}
 			/* fall through */
 		case X_RAND: {
-			long i = (long)st[sp - 1];
-			if (i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
+			/* Checked as a float first, as f_rand does: a huge
+			 * stream does not fit a long. */
+			if (!(st[sp - 1] > -1 && st[sp - 1] < p->nrng) || nundo == XRAND_UNDO)
 				goto fail;
+			long i = (long)st[sp - 1];
 			undo[nundo].i = i;
 			undo[nundo++].state = p->rng[i];
 			p->rng[i] = p->rng[i] * 1812433253u + 12345u;
@@ -844,9 +846,10 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 		}
 			/* fall through */
 		case X_RAND: {
-			long i = (long)st[sp - 1].v[0];
-			if (st[sp - 1].kind != VAL_FLOAT || i < 0 || i >= p->nrng || nundo == XRAND_UNDO)
+			if (st[sp - 1].kind != VAL_FLOAT || !(st[sp - 1].v[0] > -1 && st[sp - 1].v[0] < p->nrng) ||
+			    nundo == XRAND_UNDO)
 				goto fail;
+			long i = (long)st[sp - 1].v[0];
 			undo[nundo].i = i;
 			undo[nundo++].state = p->rng[i];
 			p->rng[i] = p->rng[i] * 1812433253u + 12345u;

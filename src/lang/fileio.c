@@ -240,17 +240,41 @@ static bool read_number(struct sdl_file *f, double *out)
 	return true;
 }
 
+static void unref_file(void *f)
+{
+	sdl_file_unref(f);
+}
+
+static void read_items(struct parser *p, struct srcpos at, const char *fname, struct sdl_file *f);
+
 /* #read ( IDENT , VAR {, VAR} ) */
 void parse_read(struct parser *p, struct srcpos at)
 {
 	parse_expect(p, TOK_LPAREN);
 	const char *fname = parse_peek(p)->kind == TOK_IDENT ? parse_peek(p)->str : NULL;
 	struct sdl_file *f = file_arg(p, false);
+	/* Held while reading: the file's identifier is unbound at the end of
+	 * the file, and a variable read into could be bound to it (through a
+	 * macro parameter); found by fuzzing as a use after free. */
+	f->refs++;
+	int slot = parse_own(p, f, unref_file);
+	read_items(p, at, fname, f);
+	parse_release(p, slot);
+	sdl_file_unref(f);
+}
+
+static void read_items(struct parser *p, struct srcpos at, const char *fname, struct sdl_file *f)
+{
 	while (parse_accept(p, TOK_COMMA)) {
 		const struct token *t = parse_peek(p);
 		if (t->kind != TOK_IDENT)
 			parse_expected(p, "an identifier to read into");
 		const char *var = t->str;
+		/* POV-Ray: "Expected 'undeclared identifier', file identifier
+		 * found instead" (#read (F, F, ...) freed the file being read). */
+		const struct value *old = parse_lookup(p, var);
+		if (old && old->kind == VAL_FILE)
+			parse_error(p, "#read cannot read into '%s': it is a file identifier", var);
 		parse_advance(p);
 		while (f->pos < f->ntoks && f->toks[f->pos].kind == TOK_COMMA)
 			f->pos++;

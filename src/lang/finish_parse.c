@@ -232,8 +232,11 @@ void parse_interior(struct parser *p, struct interior **in)
 			parse_advance(p);
 			struct srcpos at = parse_peek(p)->pos;
 			double d = parse_float(p);
-			if (d < 2)
+			if (!(d >= 2))
 				parse_error_at(p, at, "dispersion_samples must be at least 2");
+			/* POV-Ray's int cast makes 3e9 negative: "minimum is 2" */
+			if (d >= 2147483648.0)
+				parse_error_at(p, at, "dispersion_samples must be from 2 to 2147483647, not %g", d);
 			n->dispersion_samples = (int)d;
 			break;
 		}

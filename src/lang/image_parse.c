@@ -167,10 +167,10 @@ static struct image *function_image(struct parser *p)
 {
 	parse_advance(p);
 	struct srcpos wat = parse_peek(p)->pos;
-	int w = (int)parse_float(p);
+	int w = parse_int_of(parse_float(p));
 	parse_expect(p, TOK_COMMA);
 	struct srcpos hat = parse_peek(p)->pos;
-	int h = (int)parse_float(p);
+	int h = parse_int_of(parse_float(p));
 	if (w < 1)
 		parse_error_at(p, wat, "a function image's width must be at least 1, not %d", w);
 	if (h < 1)

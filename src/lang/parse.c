@@ -485,22 +485,30 @@ struct symtab *parse_alias_target(struct parser *p, const char **name)
 struct suggest {
 	const char *name;
 	size_t namelen;
+	size_t limit; /* the largest distance that is suggested */
 	const char *best;
 	size_t best_dist;
 };
 
-/* Edit distance, capped: the suggestion only matters when it is small. */
-static size_t edit_distance(const char *a, size_t n, const char *b, size_t m)
+/* Edit distance, capped: the suggestion only matters when it is at most
+ * `limit`, so any larger distance is returned as limit + 1, found without
+ * filling the table when the lengths alone differ by more (a scene with
+ * thousands of names made the error path cost more than the parse: the
+ * fuzzer's profile). */
+static size_t edit_distance(const char *a, size_t n, const char *b, size_t m, size_t limit)
 {
 	enum { CAP = 64 };
 	if (n >= CAP || m >= CAP)
 		return CAP;
+	if ((n > m ? n - m : m - n) > limit)
+		return limit + 1;
 	size_t row[CAP + 1];
 	for (size_t j = 0; j <= m; j++)
 		row[j] = j;
 	for (size_t i = 1; i <= n; i++) {
 		size_t diag = row[0];
 		row[0] = i;
+		size_t low = row[0];
 		for (size_t j = 1; j <= m; j++) {
 			size_t up = row[j];
 			size_t cost = a[i - 1] == b[j - 1] ? 0 : (a[i - 1] | 32) == (b[j - 1] | 32) ? 0 : 1;
@@ -509,24 +517,36 @@ static size_t edit_distance(const char *a, size_t n, const char *b, size_t m)
 			if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
 			row[j] = best;
 			diag = up;
+			if (best < low) low = best;
 		}
+		if (low > limit) /* every later row is at least this */
+			return limit + 1;
 	}
-	return row[m];
+	return row[m] > limit ? limit + 1 : row[m];
 }
 
 static void consider(void *arg, const char *cand)
 {
 	struct suggest *s = arg;
-	size_t d = edit_distance(s->name, s->namelen, cand, strlen(cand));
+	size_t d = edit_distance(s->name, s->namelen, cand, strlen(cand), s->limit);
 	if (d < s->best_dist || (d == s->best_dist && s->best && strcmp(cand, s->best) < 0)) {
 		s->best_dist = d;
 		s->best = cand;
 	}
 }
 
+int parse_int_of(double x)
+{
+	if (!(x > -2147483649.0 && x < 2147483648.0))
+		return INT_MIN;
+	return (int)x;
+}
+
 void parse_undefined(struct parser *p, const char *name)
 {
-	struct suggest s = {name, strlen(name), NULL, (size_t)-1};
+	size_t len = strlen(name);
+	size_t limit = len <= 3 ? 1 : len / 3;
+	struct suggest s = {name, len, limit, NULL, (size_t)-1};
 	for (int i = p->nframes - 1; i >= 0; i--)
 		if (p->frames[i].locals)
 			sym_each(p->frames[i].locals, consider, &s);
@@ -534,13 +554,12 @@ void parse_undefined(struct parser *p, const char *name)
 	const char *kw_best = NULL;
 	size_t kw_dist = (size_t)-1;
 	for (int k = 1; k < KW__COUNT; k++) {
-		size_t d = edit_distance(name, s.namelen, kw_names[k], strlen(kw_names[k]));
+		size_t d = edit_distance(name, s.namelen, kw_names[k], strlen(kw_names[k]), limit);
 		if (d < kw_dist) {
 			kw_dist = d;
 			kw_best = kw_names[k];
 		}
 	}
-	size_t limit = s.namelen <= 3 ? 1 : s.namelen / 3;
 	if (s.best && s.best_dist <= limit && s.best_dist <= kw_dist)
 		parse_error(p, "undefined identifier '%s'; did you mean '%s'?", name, s.best);
 	if (kw_best && kw_dist <= limit)

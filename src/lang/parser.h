@@ -293,6 +293,10 @@ void parse_drop(struct parser *p, struct value *v);
 /* Expressions (expr.c). */
 struct value parse_expression(struct parser *p);
 double parse_float(struct parser *p);
+/* A float where POV-Ray takes a C int: truncated, and INT_MIN outside the
+ * int's range and for NaN (what POV-Ray's cast gives on x86), never the
+ * undefined cast (found by fuzzing: dispersion_samples 5.6e22). */
+int parse_int_of(double x);
 vec3 parse_vector(struct parser *p);
 struct rgbft parse_color(struct parser *p);
 /* Is the current token the start of an expression? */

@@ -207,7 +207,7 @@ void parse_pattern_type(struct parser *p, struct pattern *pt, enum pattern_use u
 	parse_advance(p);
 	switch (k) {
 	case PAT_GRADIENT: pt->vec = parse_vector(p); break;
-	case PAT_SPIRAL1: case PAT_SPIRAL2: pt->n[0] = (int)parse_float(p); break;
+	case PAT_SPIRAL1: case PAT_SPIRAL2: pt->n[0] = parse_int_of(parse_float(p)); break;
 	case PAT_TILING: pt->n[0] = parse_int_in(p, "the tiling pattern's number", 1, 27); break;
 	case PAT_JULIA:
 		parse_complex(p, pt->fractal.c);
@@ -497,7 +497,7 @@ bool parse_pattern_modifier(struct parser *p, struct pattern *pt)
 		int i = k == KW_NUMBER_OF_SIDES ? 0 : k == KW_NUMBER_OF_TILES ? 1 : 2;
 		if (i == 0) {
 			struct srcpos vat = parse_peek(p)->pos;
-			int s = (int)parse_float(p);
+			int s = parse_int_of(parse_float(p));
 			if (s != 3 && s != 4 && s != 6)
 				parse_error_at(p, vat, "number_of_sides must be 3, 4 or 6, not %d", s);
 			pt->n[0] = s;

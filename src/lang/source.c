@@ -21,11 +21,10 @@ struct srcmgr *src_new(void)
 	return sm;
 }
 
-void src_free(struct srcmgr *sm)
+void src_truncate(struct srcmgr *sm, size_t nfiles)
 {
-	if (!sm) return;
-	for (size_t i = 1; i < sm->nfiles; i++) {
-		struct srcfile *f = sm->files[i];
+	while (sm->nfiles > nfiles && sm->nfiles > 1) {
+		struct srcfile *f = sm->files[--sm->nfiles];
 		free(f->path);
 		free(f->text);
 		free(f->lines);
@@ -35,6 +34,12 @@ void src_free(struct srcmgr *sm)
 		free(f->blocks);
 		free(f);
 	}
+}
+
+void src_free(struct srcmgr *sm)
+{
+	if (!sm) return;
+	src_truncate(sm, 1);
 	free(sm->files);
 	intern_free(sm->names);
 	free(sm);

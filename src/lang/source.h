@@ -39,6 +39,10 @@ struct srcmgr {
 
 struct srcmgr *src_new(void);
 void src_free(struct srcmgr *sm);
+/* Forget every file registered after the first `nfiles` (counting the
+ * unused index 0), as if they had never been read: the fuzz harness keeps
+ * the stdlib's files, lexed once, across inputs. */
+void src_truncate(struct srcmgr *sm, size_t nfiles);
 /* Register text read from `path` (takes ownership of text, which must be
  * NUL-terminated at text[len]). Returns the new file's index. */
 uint32_t src_add(struct srcmgr *sm, const char *path, char *text, size_t len);

@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "lang/diag.h"
+#include "lang/intern.h"
 #include "lang/lex.h"
 #include "lang/source.h"
 
@@ -489,6 +490,67 @@ static void test_diag_without_position(void **state)
 	src_free(sm);
 }
 
+/* intern_rollback forgets exactly the strings interned since intern_mark:
+ * those interned before keep their pointers and are found again, the
+ * forgotten ones are new copies when interned again. `grow` interns enough
+ * to make the table grow (and rehash) between the mark and the rollback. */
+static void rollback_case(int grow)
+{
+	struct interner *in = intern_new();
+	const char *before[300];
+	char buf[32];
+	for (int i = 0; i < 300; i++) {
+		snprintf(buf, sizeof buf, "old%d", i);
+		before[i] = intern_cstr(in, buf);
+	}
+	intern_mark(in);
+	int n = grow ? 5000 : 100;
+	for (int i = 0; i < n; i++) {
+		snprintf(buf, sizeof buf, "new%d", i);
+		intern_cstr(in, buf);
+		assert_ptr_equal(intern_cstr(in, buf), intern_cstr(in, buf));
+	}
+	assert_ptr_equal(intern_cstr(in, "old7"), before[7]);
+	intern_rollback(in);
+	for (int i = 0; i < 300; i++) {
+		snprintf(buf, sizeof buf, "old%d", i);
+		assert_ptr_equal(intern_cstr(in, buf), before[i]);
+	}
+	/* Not marked any more: this stays, and a second rollback is a no-op. */
+	const char *kept = intern_cstr(in, "new1");
+	assert_string_equal(kept, "new1");
+	intern_rollback(in);
+	assert_ptr_equal(intern_cstr(in, "new1"), kept);
+	intern_free(in);
+}
+
+static void test_intern_rollback(void **state)
+{
+	(void)state;
+	rollback_case(0);
+}
+
+static void test_intern_rollback_after_growth(void **state)
+{
+	(void)state;
+	rollback_case(1);
+}
+
+/* src_truncate drops the files registered last and keeps the others. */
+static void test_src_truncate(void **state)
+{
+	(void)state;
+	struct srcmgr *sm = src_new();
+	uint32_t a = src_add(sm, "a.pov", strdup("a"), 1);
+	uint32_t b = src_add(sm, "b.pov", strdup("b"), 1);
+	src_truncate(sm, b);
+	assert_int_equal(src_find(sm, "a.pov"), a);
+	assert_int_equal(src_find(sm, "b.pov"), 0);
+	assert_null(src_file(sm, b));
+	assert_int_equal(src_add(sm, "c.pov", strdup("c"), 1), b);
+	src_free(sm);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -508,6 +570,9 @@ int main(void)
 		cmocka_unit_test(test_error_unexpected_character),
 		cmocka_unit_test(test_describe),
 		cmocka_unit_test(test_diag_without_position),
+		cmocka_unit_test(test_intern_rollback),
+		cmocka_unit_test(test_intern_rollback_after_growth),
+		cmocka_unit_test(test_src_truncate),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
