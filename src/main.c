@@ -12,6 +12,7 @@
 #include "options.h"
 #include "render/prepare.h"
 #include "render/render.h"
+#include "scene/fn.h"
 #include "scene/scene.h"
 
 #include <errno.h>
@@ -28,7 +29,8 @@
 #endif
 
 /* The one piece of process-wide state: set by SIGINT/SIGTERM, read by the
- * render threads between tiles and by the writer before it renames. */
+ * render threads between tiles, by the function VM's sum() and prod()
+ * loops, and by the writer before it renames. */
 static volatile sig_atomic_t interrupted;
 
 static void on_signal(int sig)
@@ -234,6 +236,7 @@ int main(int argc, char **argv)
 	sigemptyset(&sa.sa_mask);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
+	fn_set_stop(&interrupted);
 
 	const char *stdlib_dir = getenv("LUCENT_STDLIB");
 	if (!stdlib_dir || !*stdlib_dir)

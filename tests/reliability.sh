@@ -39,6 +39,25 @@ rc=$?
 check "SIGTERM in a #for with macro calls exits with status 2" [ $rc -eq 2 ]
 check "the message names the #for loop" grep -qE '^forloop\.pov:[0-9]+:[0-9]+: error: interrupted while parsing, in the #for loop at forloop\.pov:2$' err.txt
 
+# A function's sum() over 1e15 terms (fuzz run 12's hang): POV-Ray loops as
+# long, but Ctrl-C must stop it.
+cat > sum.pov <<'POV'
+#declare F = function(n) { sum(i, 1, n, i * i) }
+#declare X = F(1e15);
+POV
+"$LUCENT" -q +W8 +H6 sum.pov +Osum.png > err.txt 2>&1 &
+pid=$!
+sleep 0.5
+kill -INT $pid
+# A watchdog, so that a sum() deaf to Ctrl-C fails the test, not hangs it.
+( sleep 30; kill -KILL $pid 2>/dev/null ) &
+dog=$!
+wait $pid
+rc=$?
+kill $dog 2>/dev/null
+check "Ctrl-C in a long sum() while parsing exits with status 2" [ $rc -eq 2 ]
+check "the message says where the parser was" grep -qE '^sum\.pov:[0-9]+:[0-9]+: error: interrupted while parsing' err.txt
+
 # ---- the file rule: what is allowed ----
 mkdir -p scene/sub lib
 echo '#declare FromSub = 1;' > scene/sub/a.inc

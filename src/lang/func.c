@@ -561,17 +561,23 @@ struct value parse_call_function(struct parser *p, const struct fn *f, struct sr
 	}
 	if (n != f->nparams)
 		parse_error_at(p, at, "this function takes %d argument%s, not %d", f->nparams, f->nparams == 1 ? "" : "s", n);
+	struct value r;
 	if (f->pig) {
 		double c[5];
 		fn_eval_color(f, args, c);
-		return val_vector(5, c, VAL_COLOR, at);
-	}
-	if (f->vdim > 0) {
+		r = val_vector(5, c, VAL_COLOR, at);
+	} else if (f->vdim > 0) {
 		double c[5];
 		fn_eval_vector(f, args, c);
-		return val_vector(f->vdim, c, f->vdim == 5 ? VAL_COLOR : VAL_VECTOR, at);
+		r = val_vector(f->vdim, c, f->vdim == 5 ? VAL_COLOR : VAL_VECTOR, at);
+	} else {
+		r = val_float(fn_eval(f, args), at);
 	}
-	return val_float(fn_eval(f, args), at);
+	/* A sum() or prod() left off by Ctrl-C (fn_set_stop): stop here, at the
+	 * call, rather than at the parser's next step. */
+	if (p->o->stop && *p->o->stop)
+		parse_step(p, at, false);
+	return r;
 }
 
 /* ---- splines ---- */

@@ -51,6 +51,13 @@ int fn_emit(struct fn *f, struct fn_instr in)
 	return f->ncode++;
 }
 
+static volatile sig_atomic_t *fn_stop;
+
+void fn_set_stop(volatile sig_atomic_t *stop)
+{
+	fn_stop = stop;
+}
+
 double fn_eval(const struct fn *f, const double *args)
 {
 	if (f->vdim > 0) {
@@ -126,6 +133,8 @@ double fn_eval(const struct fn *f, const double *args)
 				a[i] = args[i];
 			double acc = in->op == FN_SUM ? 0 : 1;
 			for (double v = lo; v <= hi; v += 1) {
+				if (fn_stop && *fn_stop)
+					break;
 				a[n] = v;
 				double x = fn_eval(in->fn, a);
 				acc = in->op == FN_SUM ? acc + x : acc * x;

@@ -5,6 +5,7 @@
 #ifndef LUCENT_FN_H
 #define LUCENT_FN_H
 
+#include <signal.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -77,6 +78,11 @@ int fn_emit(struct fn *f, struct fn_instr in);
 /* Evaluate f with args[0..nparams). A colour- or vector-valued function
  * gives its first component. */
 double fn_eval(const struct fn *f, const double *args);
+/* The flag a signal handler sets to stop the program (main's Ctrl-C):
+ * sum() and prod() loops, which may run for as long as their bounds say,
+ * leave off when it is set, and the parser or renderer then stops at its
+ * next check. NULL (the default): never stopped. */
+void fn_set_stop(volatile sig_atomic_t *stop);
 /* A colour-valued function's colour at args (x, y, z): red, green, blue,
  * filter, transmit. */
 void fn_eval_color(const struct fn *f, const double *args, double out[5]);
