@@ -52,10 +52,16 @@ int fn_emit(struct fn *f, struct fn_instr in)
 }
 
 static volatile sig_atomic_t *fn_stop;
+static double fn_max_terms = INFINITY;
 
 void fn_set_stop(volatile sig_atomic_t *stop)
 {
 	fn_stop = stop;
+}
+
+void fn_set_max_terms(double n)
+{
+	fn_max_terms = n;
 }
 
 double fn_eval(const struct fn *f, const double *args)
@@ -132,8 +138,9 @@ double fn_eval(const struct fn *f, const double *args)
 			for (int i = 0; i < n; i++)
 				a[i] = args[i];
 			double acc = in->op == FN_SUM ? 0 : 1;
+			double terms = 0;
 			for (double v = lo; v <= hi; v += 1) {
-				if (fn_stop && *fn_stop)
+				if ((fn_stop && *fn_stop) || ++terms > fn_max_terms)
 					break;
 				a[n] = v;
 				double x = fn_eval(in->fn, a);

@@ -83,6 +83,10 @@ double fn_eval(const struct fn *f, const double *args);
  * leave off when it is set, and the parser or renderer then stops at its
  * next check. NULL (the default): never stopped. */
 void fn_set_stop(volatile sig_atomic_t *stop);
+/* A bound on the terms of one sum() or prod(), which then leave off (the
+ * fuzz harnesses set it, as they bound a scene's directives: a sum over
+ * 1e90 terms is the user's to stop, not a bug). Default: none. */
+void fn_set_max_terms(double n);
 /* A colour-valued function's colour at args (x, y, z): red, green, blue,
  * filter, transmit. */
 void fn_eval_color(const struct fn *f, const double *args, double out[5]);
