@@ -776,6 +776,7 @@ struct obj_state {
 	unsigned flags;           /* flags given to a CSG, for its children */
 	size_t lights_from;       /* the scene's lights from here on were read inside it */
 	bool light_first;         /* a difference whose body began with a light_source */
+	bool uv;                  /* an object-level uv_mapping was given */
 };
 
 /* Replace s->o by a primitive rebuilt from s->args (after `open` or
@@ -800,7 +801,7 @@ static void rebuild(struct parser *p, struct obj_state *s)
  *   | material | transform_item
  *   | no_shadow | no_image | no_reflection | hollow [BOOL]
  *   | double_illuminate | inverse | clipped_by | bounded_by
- *   | open | sturm | split_union BOOL */
+ *   | open | sturm | split_union BOOL | uv_mapping */
 static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 {
 	struct object *o = s->o;
@@ -818,9 +819,30 @@ static bool parse_object_modifier(struct parser *p, struct obj_state *s)
 		return true;
 	struct srcpos at = tk->pos;
 	switch (tk->kw) {
-	case KW_TEXTURE: parse_texture_layer(p, &o->tex); return true;
-	case KW_PIGMENT: parse_pigment(p, &parse_private_texture(p, &o->tex)->pigment); return true;
-	case KW_NORMAL: parse_normal(p, &parse_private_texture(p, &o->tex)->normal); return true;
+	case KW_TEXTURE:
+		parse_texture_layer(p, &o->tex);
+		if (s->uv)
+			texture_uv_mapping(&o->tex, true);
+		return true;
+	case KW_PIGMENT:
+		parse_pigment(p, &parse_private_texture(p, &o->tex)->pigment);
+		if (s->uv)
+			texture_uv_mapping(&o->tex, false);
+		return true;
+	case KW_NORMAL:
+		parse_normal(p, &parse_private_texture(p, &o->tex)->normal);
+		if (s->uv)
+			texture_uv_mapping(&o->tex, false);
+		return true;
+	case KW_UV_MAPPING:
+		/* POV-Ray: the textures, pigments and normals given after it are
+		 * uv-mapped; one given before is an error ("uv_mapping must be
+		 * specified before texture"). */
+		if (o->tex)
+			parse_error(p, "uv_mapping must come before the object's texture, pigment and normal");
+		parse_advance(p);
+		s->uv = true;
+		return true;
 	case KW_FINISH: parse_finish(p, &parse_private_texture(p, &o->tex)->finish); return true;
 	case KW_INTERIOR: parse_interior(p, &o->interior); return true;
 	case KW_MATERIAL: {

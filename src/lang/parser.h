@@ -408,6 +408,11 @@ void parse_texture(struct parser *p, struct texture **tex);
 /* A texture statement layered on top of *tex (NULL: none yet), as
  * several texture statements on one object are. */
 void parse_texture_layer(struct parser *p, struct texture **tex);
+/* Make the texture *tex (its top layer, made private) uv-mapped, as
+ * `texture { uv_mapping ... }` is (whole), or only its pattern, pigment
+ * and normal; an object's `uv_mapping` does this to each texture (whole),
+ * pigment or normal given after it. */
+void texture_uv_mapping(struct texture **tex, bool whole);
 /* Patterns (pattern_parse.c). parse_at_pattern: is the current token a
  * pattern keyword (its kind in *k)? parse_pattern_type replaces *pt by the
  * pattern there with its arguments, for the given use (facets only in a

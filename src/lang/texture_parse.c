@@ -727,11 +727,13 @@ struct blend_map *parse_map_value(struct parser *p)
 /* The texture for a `texture {` statement inside a plain texture item
  * sequence: a texture identifier, or the default. */
 
-/* Apply a texture-level uv_mapping to what the texture holds. */
-static void texture_uv_mapping(struct texture **tex)
+/* Apply a texture-level uv_mapping to what the texture holds (whole: the
+ * texture itself counts as uv-mapped, so nothing layers over it). */
+void texture_uv_mapping(struct texture **tex, bool whole)
 {
 	struct texture *t = own_texture(tex);
-	t->uv_mapped = true;
+	if (whole)
+		t->uv_mapped = true;
 	if (t->kind != TEX_PLAIN) {
 		t->pat.uv_mapping = true;
 		return;
@@ -920,7 +922,7 @@ static void texture_body(struct parser *p, struct texture **tex, enum tok_kind e
 	    tx->map->n < pattern_block_entries(tx->pat.kind))
 		finish_list(p, own_texture(tex)->map, &tx->pat);
 	if (uv)
-		texture_uv_mapping(tex);
+		texture_uv_mapping(tex, true);
 }
 
 /* A copy of the layers of top (each layer copied) with under below the
