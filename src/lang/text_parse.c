@@ -309,6 +309,51 @@ static uint32_t *decode(struct parser *p, const struct ttf_font *font, const cha
 	return out;
 }
 
+/* A string literal under charset utf8 (or sys), from its first non-ASCII
+ * byte at i: each well-formed UTF-8 sequence becomes one character, as
+ * POV-Ray decodes it when the string is read (measured: strlen of "aéb€c"
+ * is 5, asc gives 233 and 8364; a 4-byte sequence, beyond POV-Ray's
+ * 16-bit characters, is one U+FFFD). A byte that begins no well-formed
+ * sequence stays as it is (POV-Ray reads garbage there). */
+static const char *utf8_literal(struct parser *p, const char *s, size_t len, size_t i)
+{
+	/* A 2-byte sequence grows to 4 bytes: at most twice the length. */
+	char *t = malloc(2 * len + 1);
+	if (!t) abort();
+	memcpy(t, s, i);
+	size_t o = i;
+	while (i < len) {
+		const unsigned char *u = (const unsigned char *)s + i;
+		size_t l;
+		ustr_get(s + i, &l);
+		uint32_t code = 0;
+		size_t n = 0;
+		if (l == 1 && u[0] >= 0xC2 && u[0] <= 0xDF && i + 1 < len && (u[1] & 0xC0) == 0x80) {
+			code = (uint32_t)(u[0] & 0x1F) << 6 | (u[1] & 0x3F);
+			n = 2;
+		} else if (l == 1 && u[0] >= 0xE0 && u[0] <= 0xEF && i + 2 < len && (u[1] & 0xC0) == 0x80 &&
+		           (u[2] & 0xC0) == 0x80) {
+			code = (uint32_t)(u[0] & 0x0F) << 12 | (uint32_t)(u[1] & 0x3F) << 6 | (u[2] & 0x3F);
+			n = code >= 0x800 ? 3 : 0;
+		} else if (l == 1 && u[0] >= 0xF0 && u[0] <= 0xF4 && i + 3 < len && (u[1] & 0xC0) == 0x80 &&
+		           (u[2] & 0xC0) == 0x80 && (u[3] & 0xC0) == 0x80) {
+			code = 0xFFFD;
+			n = 4;
+		}
+		if (n) {
+			o += ustr_put(t + o, code);
+			i += n;
+		} else {
+			memcpy(t + o, s + i, l);
+			o += l;
+			i += l;
+		}
+	}
+	const char *r = parse_intern(p, t, o);
+	free(t);
+	return r;
+}
+
 const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos at)
 {
 	size_t len = strlen(s);
@@ -318,8 +363,10 @@ const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos
 		if (l == 1 && (unsigned char)s[i] >= 0x80)
 			break;
 	}
-	if (i == len || p->scene->gs.charset != 0)
+	if (i == len)
 		return s;
+	if (p->scene->gs.charset != 0)
+		return utf8_literal(p, s, len, i);
 	char *t = malloc(len + 1);
 	if (!t) abort();
 	memcpy(t, s, len + 1);
