@@ -264,101 +264,20 @@ static double lens_dim(uint32_t i, uint32_t base, double shift)
  *  - the pattern is evaluated at (u, v, 0), u and v the image position
  *    from -1/2 to 1/2 whatever the right and up vectors; the camera's own
  *    location and transformations do not move it;
- *  - the ray's unit direction d is perturbed like a surface normal, in
- *    the pattern's space (carried there as a normal and back, so a
- *    uniform scale changes nothing): patterns with a normal of their own
- *    (bumps, dents, wrinkles, ripples, waves, quilted) push it by their
- *    formula at the full amount; for the others it becomes
- *    normalize(d - CAMERA_BUMP * amount * g), g their slope from the
- *    tetrahedral difference at `accuracy` around the pattern-space point
- *    (the warps, turbulence included, applied once to the centre, not to
- *    each sample), with no projection onto the plane across d;
- *  - average and normal_map blend the entries' perturbed directions (POV-Ray
- *    3.7 crashes on a normal_map in the camera; average matches it).
- * A slope_map's heights are POV-Ray's (texture_eval.c), and so is wood with
- * its turbulence (measured to 1e-4 in the ray's slope, but on the
- * pattern's discontinuities). Known differences: facets, which looks at
- * the surface it is on, and spiral1 with turbulence, whose values differ
- * on surfaces too (src/pattern). */
-#define CAMERA_BUMP (2.0 / 15.0)
-
-/* The tetrahedron of the numerical slope (as on surfaces: texture_eval.c). */
-static const vec3 TETRA[4] = {
-	{0.942809041582063, -0.333333333333333, 0.0},
-	{-0.471404520791032, -0.333333333333333, 0.816496580927726},
-	{-0.471404520791032, -0.333333333333333, -0.816496580927726},
-	{0.0, 1.0, 0.0},
-};
-
-/* A normal carried into the pattern's space (the transpose of the
- * pattern-to-world matrix), and back (its inverse transpose). */
-static vec3 normal_into_pattern(const struct pattern *pt, vec3 n)
-{
-	for (int i = 0; i < pt->nops; i++)
-		if (pt->ops[i].kind == POP_TRANSFORM)
-			n = mat_normal(&pt->ops[i].xf.fwd, n);
-	return n;
-}
-
-static vec3 normal_out_of_pattern(const struct pattern *pt, vec3 n)
-{
-	for (int i = pt->nops - 1; i >= 0; i--)
-		if (pt->ops[i].kind == POP_TRANSFORM)
-			n = mat_normal(&pt->ops[i].xf.inv, n);
-	return n;
-}
-
-/* The unit direction d perturbed by nm at image position (u, v). */
+ *  - the ray's unit direction d is perturbed exactly as a surface normal
+ *    d facing the ray would be (normal_eval, texture_eval.c): patterns
+ *    with a normal of their own push it by their formula at the full
+ *    amount, the others tilt it in the pattern's space by 2/15 of the
+ *    amount times their numerical slope, and average and normal_map blend
+ *    the entries' directions (POV-Ray 3.7 crashes on a normal_map in the
+ *    camera; average matches it).
+ * Known differences: facets, which looks at the surface it is on, and
+ * spiral1 with turbulence, whose values differ on surfaces too. */
 static vec3 camera_perturb(const struct normal *nm, const struct scene *s, double u, double v, vec3 d)
 {
-	const struct pattern *pt = &nm->pat;
-	const struct blend_map *map = nm->map;
 	struct pattern_ctx ctx = {.p = v3(u, v, 0), .normal = d, .dir = d,
 	                          .noise_generator = s->gs.noise_generator, .number_of_waves = s->gs.number_of_waves};
-	if (pt->kind == PAT_NONE)
-		return d;
-	if (pt->kind == PAT_AVERAGE && !map)
-		return d;
-	if (pt->kind == PAT_AVERAGE || (map && map->kind == MAP_NORMAL)) {
-		/* The entries' perturbed directions, weighted as on a surface:
-		 * average by the entries' weights, a normal_map by the pattern's
-		 * value between two entries, a block pattern by its entry. */
-		int lo = 0, hi = map->n - 1;
-		double w = 0;
-		if (pt->kind != PAT_AVERAGE) {
-			double val = pattern_value(pt, &ctx);
-			if (pattern_is_block(pt->kind)) {
-				lo = hi = val < 0 ? 0 : val >= map->n ? map->n - 1 : (int)val;
-			} else {
-				blend_map_find(map, val, &lo, &hi, &w);
-			}
-		}
-		vec3 sum = v3(0, 0, 0);
-		for (int i = lo; i <= hi; i++) {
-			double k = pt->kind == PAT_AVERAGE ? map->e[i].value : i == lo ? 1 - w : i == hi ? w : 0;
-			if (k == 0)
-				continue;
-			const struct normal *e = map->e[i].item;
-			sum = v3_madd(sum, e ? camera_perturb(e, s, u, v, d) : d, k);
-		}
-		double l = v3_len(sum);
-		return l > 0 ? v3_scale(sum, 1 / l) : d;
-	}
-	vec3 out;
-	if (pattern_special_normal(pt, nm->amount, ctx.p, d, &ctx, &out))
-		return out; /* the full amount, unlike the slope (measured) */
-	double delta = nm->accuracy > 0 ? nm->accuracy : 0.02;
-	vec3 g = v3(0, 0, 0);
-	vec3 q = pattern_point_ctx(pt, ctx.p, &ctx);
-	for (int i = 0; i < 4; i++) {
-		double hv = pattern_wave(pt, pattern_raw(pt, v3_madd(q, TETRA[i], delta), &ctx));
-		g = v3_madd(g, TETRA[i], normal_height(nm, hv));
-	}
-	g = v3_scale(g, 3.0 / (4.0 * delta));
-	vec3 np = v3_norm(normal_into_pattern(pt, d));
-	vec3 m = normal_out_of_pattern(pt, v3_madd(np, g, -CAMERA_BUMP * nm->amount));
-	double l = v3_len(m);
-	return l > 0 ? v3_scale(m, 1 / l) : d;
+	return normal_eval(nm, d, &ctx);
 }
 
 /* The camera's ray at (x, y) with lens sample (lu, lv), perturbed by its
