@@ -510,6 +510,30 @@ static void pts_free(struct points *P)
 	free(P->ends);
 }
 
+/* One coordinate of a simple glyph's npts points, stored as deltas at *at
+ * (flag short_bit: a byte, its sign by same_bit; else same_bit: no change;
+ * else a signed 16-bit delta), summed into out. False if they run past end. */
+static bool read_deltas(const struct ttf_font *f, size_t *at, size_t end, const unsigned char *flags,
+                        unsigned npts, unsigned short_bit, unsigned same_bit, double *out)
+{
+	int v = 0;
+	for (unsigned i = 0; i < npts; i++) {
+		if (flags[i] & short_bit) {
+			if (*at >= end)
+				return false;
+			int d = (int)u8(f, (*at)++);
+			v += flags[i] & same_bit ? d : -d;
+		} else if (!(flags[i] & same_bit)) {
+			if (*at + 2 > end)
+				return false;
+			v += s16(f, *at);
+			*at += 2;
+		}
+		out[i] = v;
+	}
+	return true;
+}
+
 /* A simple glyph (nc contours) at off, len bytes, appended to P. */
 static bool read_simple(const struct ttf_font *f, size_t off, size_t len, unsigned nc, struct points *P)
 {
@@ -543,36 +567,11 @@ static bool read_simple(const struct ttf_font *f, size_t off, size_t len, unsign
 		}
 	}
 	size_t base = P->n;
-	int v = 0;
-	for (unsigned i = 0; i < npts; i++) {
-		if (flags[i] & PT_X_SHORT) {
-			if (at >= end)
-				goto bad;
-			int d = (int)u8(f, at++);
-			v += flags[i] & PT_X_SAME ? d : -d;
-		} else if (!(flags[i] & PT_X_SAME)) {
-			if (at + 2 > end)
-				goto bad;
-			v += s16(f, at);
-			at += 2;
-		}
-		pts_push(P, v, 0, flags[i] & PT_ON_CURVE);
-	}
-	v = 0;
-	for (unsigned i = 0; i < npts; i++) {
-		if (flags[i] & PT_Y_SHORT) {
-			if (at >= end)
-				goto bad;
-			int d = (int)u8(f, at++);
-			v += flags[i] & PT_Y_SAME ? d : -d;
-		} else if (!(flags[i] & PT_Y_SAME)) {
-			if (at + 2 > end)
-				goto bad;
-			v += s16(f, at);
-			at += 2;
-		}
-		P->y[base + i] = v;
-	}
+	for (unsigned i = 0; i < npts; i++)
+		pts_push(P, 0, 0, flags[i] & PT_ON_CURVE);
+	if (!read_deltas(f, &at, end, flags, npts, PT_X_SHORT, PT_X_SAME, P->x + base) ||
+	    !read_deltas(f, &at, end, flags, npts, PT_Y_SHORT, PT_Y_SAME, P->y + base))
+		goto bad;
 	free(flags);
 	for (unsigned i = 0; i < nc; i++) {
 		unsigned e = u16(f, ends + 2 * (size_t)i);
