@@ -991,27 +991,23 @@ static struct object *parse_object_in(struct parser *p, bool child)
 	case KW_INTERSECTION: s.o = csg_new(CSG_INTERSECTION, at); break;
 	case KW_DIFFERENCE: s.o = csg_new(CSG_DIFFERENCE, at); break;
 	case KW_PRISM:
-		memset(&args, 0, sizeof args);
-		args.kw = k;
-		s.args = &args;
-		s.o = parse_prism(p, at);
-		break;
 	case KW_POLYGON:
 	case KW_LATHE:
 	case KW_SOR:
 	case KW_ISOSURFACE:
-		memset(&args, 0, sizeof args);
-		args.kw = k;
-		s.args = &args;
-		s.o = parse_object2(p, k, at);
-		break;
 	case KW_BLOB:
 	case KW_HEIGHT_FIELD:
 	case KW_SPHERE_SWEEP:
+		/* Shapes read by their own parsers; args.kw routes their modifiers. */
 		memset(&args, 0, sizeof args);
 		args.kw = k;
 		s.args = &args;
-		s.o = parse_object3(p, k, at);
+		if (k == KW_PRISM)
+			s.o = parse_prism(p, at);
+		else if (k == KW_BLOB || k == KW_HEIGHT_FIELD || k == KW_SPHERE_SWEEP)
+			s.o = parse_object3(p, k, at);
+		else
+			s.o = parse_object2(p, k, at);
 		break;
 	case KW_TEXT: s.o = parse_text(p, at); break;
 	case KW_MESH:
