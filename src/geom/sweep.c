@@ -165,30 +165,6 @@ static double f_min(const struct ray_poly *rp, double sigma, double a, double b,
 	return best;
 }
 
-/* Does the ray o + t d meet the box? (A cheap test before a piece.) */
-static bool ray_meets_box(vec3 o, vec3 d, struct aabb b)
-{
-	double t0 = -INFINITY, t1 = INFINITY;
-	const double oo[3] = {o.x, o.y, o.z}, dd[3] = {d.x, d.y, d.z};
-	const double lo[3] = {b.lo.x, b.lo.y, b.lo.z}, hi[3] = {b.hi.x, b.hi.y, b.hi.z};
-	for (int j = 0; j < 3; j++) {
-		if (dd[j] == 0) {
-			if (oo[j] < lo[j] || oo[j] > hi[j])
-				return false;
-			continue;
-		}
-		double a = (lo[j] - oo[j]) / dd[j], c = (hi[j] - oo[j]) / dd[j];
-		if (a > c) {
-			double x = a;
-			a = c;
-			c = x;
-		}
-		t0 = fmax(t0, a);
-		t1 = fmin(t1, c);
-	}
-	return t0 <= t1;
-}
-
 /* The spans of piece i along the ray (o, unit u, |d| = len), appended to
  * out (room for 4 more needed: E has at most 6 roots); returns the new
  * count. t is in the ray's own parameter (divided by len). */
@@ -248,7 +224,8 @@ static int sweep_crossings(const struct object *o, const struct ray *r, double t
 	struct span local[256], *sp = local;
 	int cap = 256, n = 0;
 	for (int i = 0; i < sw->n; i++) {
-		if (!ray_meets_box(r->org, r->dir, sw->pc[i].box))
+		/* A cheap test before the piece: its box on the whole line. */
+		if (!object_ray_meets_box(sw->pc[i].box, r, -INFINITY, INFINITY))
 			continue;
 		if (n + 4 > cap) {
 			struct span *bigger = malloc((size_t)cap * 2 * sizeof *bigger);
