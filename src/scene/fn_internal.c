@@ -8,11 +8,8 @@
  * the functions and their parameters; the formulas were worked out by
  * evaluating POV-Ray 3.7 at many points and written anew from that. The
  * deterministic functions reproduce POV-Ray's values to rounding (the unit
- * test holds the recorded values), with these exceptions:
- *   - f_comma matches on its ball only; its tail is an approximation;
- *   - f_helical_torus matches without twist, threshold, second fatness and
- *     grooves (and with a whole number of loops) only;
- *   - f_mesh1 matches for positive thread spacings only.
+ * test holds the recorded values), with one exception: f_mesh1 matches
+ * for positive thread spacings only.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
  * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
@@ -755,58 +752,60 @@ static double f_spiral(const double *a)
 	return fmax(s - a[4], r - a[5]);
 }
 
-/* A torus of major radius P0 with a winding. Only partly reproduces
- * POV-Ray: it matches for a whole P1, P2 = 0, P4 = 0, P6 = 1 and
- * P7 = P8 = P9 = 0 (any P0, P3 and P5). The twist (P2), the threshold (P4),
- * the second fatness (P6), a fractional P1 and the grooves (P7-P9) follow
- * the shapes POV-Ray draws but not its values.
+/* A torus of major radius P0 wound with P1 loops (POV-Ray's values at every
+ * parameter set tried).
  *
- * With d the distance from the core circle and phi the angle around it,
- * the winding is P1 rings (or, twisted, one helix) of radius P5 around the
- * core; like f_helix1, the winding's cross section never exceeds d + P5.
- * A column of radius P5 - P0 around the y axis takes over for large P5. */
+ * Around the y axis the angle t is measured from +z towards -x, in (-pi,
+ * pi] (the y axis itself counts as +x, t = -pi/2). Around the core circle
+ * the point lies at distance d, at angle p from +y towards the outside.
+ * The winding's coordinate w = P1 t + pi - P2 p, wrapped to (-pi, pi], is
+ * zero on the winding: P1 separate rings, or with a twist P2 rings that
+ * run into one another. Its cross section is
+ * s = sqrt((d - P5)^2 + P6 w^2), never more than d + P5 (the distance to
+ * the far side of a ring of radius P5), and it is P3 thick, a thickness
+ * modulated by the grooves cos(P9 t + P7 atan2(P8 w, d - P5)). A column
+ * rho + P0 - P5 around the y axis takes over where it is nearer; P4 is
+ * subtracted from the whole.
+ *
+ * A negative P6 makes s NaN: the comparisons are written so that the
+ * column is the value then, as in POV-Ray. */
 static double f_helical_torus(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
 	double R = a[3], loops = a[4], twist = a[5], fat = a[6], thr = a[7];
 	double wr = a[8], fat2 = a[9], gper = a[10], gamp = a[11], gphase = a[12];
 	double rho = sqrt(x * x + z * z);
-	double th = atan2(z, x);
-	if (th < 0)
-		th += 2 * M_PI;
+	double t = atan2(z, x) - M_PI / 2;
+	if (t < -M_PI)
+		t += 2 * M_PI;
 	double u = rho - R, d = sqrt(u * u + y * y);
-	double dw = loops * (th - M_PI / 2) + M_PI - twist * atan2(y, u);
-	dw -= 2 * M_PI * floor(dw / (2 * M_PI) + 0.5);
-	double s = fmin(sqrt(sq(d - wr) + sq(dw / fat2)), d + wr);
-	double phase = 1 - cos(gphase * (th - M_PI / 2));
-	double groove = 1 - cos(gper * (atan2(2 * d, M_PI * gamp) - M_PI / 2));
-	return fmin(s - fat - thr + phase + groove, rho + R - wr);
+	double w = loops * t + M_PI - twist * atan2(u, y);
+	w -= 2 * M_PI * ceil(w / (2 * M_PI) - 0.5);
+	double s = sqrt(sq(d - wr) + fat2 * w * w);
+	if (s > d + wr)
+		s = d + wr;
+	double wind = s - fat * cos(gphase * t + gper * atan2(gamp * w, d - wr));
+	double column = rho + R - wr;
+	return (wind < column ? wind : column) - thr;
 }
 
-/* The comma of size 1: a ball of radius 0.5 at (0.5, 0, 0) (as POV-Ray's)
- * and a tail that curls from it over +z to (-1, 0, 0), thinning to nothing
- * (an approximation of POV-Ray's tail). */
-static double comma1(double x, double y, double z)
-{
-	double ball = sqrt(sq(x - 0.5) + y * y + z * z) - 0.5;
-	double cx = x + 0.25;
-	double ang = atan2(z, cx);
-	double tail;
-	if (ang >= 0) {
-		double r = 0.35 * (1 - ang / M_PI);
-		tail = sqrt(sq(sqrt(cx * cx + z * z) - 0.75) + y * y) - r;
-	} else {
-		tail = sqrt(sq(x + 1) + y * y + z * z);
-	}
-	return fmin(ball, tail);
-}
-
-/* A comma scaled by P0. Matches POV-Ray on the ball; the tail is only
- * approximated. */
+/* The comma of size P0 (s below): a ball of radius s / 2 at (s / 2, 0, 0)
+ * and a tail, a tube around the circle of radius 3s / 4 about
+ * (-s / 4, 0, 0) in the xz plane whose radius (s / 2) cos(a / 2) shrinks
+ * with the angle a of the point about the origin, from the ball's at +x
+ * to nothing at (-s, 0, 0); the tail is cut off below the plane z = 0.
+ * On the y axis x counts as 0.0001, as in POV-Ray. A negative or zero P0
+ * keeps the formula (POV-Ray's values are those). */
 static double f_comma(const double *a)
 {
-	double s = a[3];
-	return s * comma1(a[0] / s, a[1] / s, a[2] / s);
+	double x = a[0], y = a[1], z = a[2], s = a[3];
+	if (x == 0 && z == 0)
+		x = 0.0001;
+	double ball = sqrt(sq(x - 0.5 * s) + y * y + z * z) - 0.5 * s;
+	double r = 0.5 * s * cos(atan2(fabs(z), x) / 2);
+	double core = sqrt(sq(x + 0.25 * s) + z * z) - 0.75 * s;
+	double tail = sqrt(core * core + y * y) - r;
+	return fmin(ball, fmax(tail, -z));
 }
 
 /* ---- noise ----

@@ -7,10 +7,7 @@
 # Usage: sh tests/unit/fn_internal_record.sh > rows.txt
 # (needs `povray` on the PATH; POVRAY overrides the command). Each case line
 # is "N x y z P0 P1 ...". The noise-based functions (29, 58, 59, 76, 78) are
-# not recorded: lucent's noise differs from POV-Ray's by design. The cases of
-# f_comma (9) stay on its ball and those of f_helical_torus (24) keep P2, P4,
-# P7, P8, P9 at 0, P6 at 1 and P1 whole: only there does lucent reproduce
-# those two.
+# not recorded: lucent's noise differs from POV-Ray's by design.
 set -eu
 povray=${POVRAY:-povray}
 dir=$(mktemp -d)
@@ -326,6 +323,28 @@ cat > "$dir/cases.txt" <<'CASES'
 24 -1.2152 -0.1163 -1.262 1.6287 5 0 1.9545 0 0.0877 1 0 0 0
 24 0.3812 1.2592 1.4256 0.8974 5 0 0.3959 0 2.3724 1 0 0 0
 24 1.4221 0.7532 1.3376 1.2026 2 0 1.2735 0 0.6106 1 0 0 0
+9 0 0 0.7 1
+9 -0.5 0.2 0.5 1
+9 -0.8 0 0.3 1
+9 -1.2 0.1 -0.3 1
+9 0.45 0 0.35 1
+9 0 0.1 0 1
+9 0 0 0 2
+9 -0.7 0.3 0.9 -1.5
+9 0.3 0.2 -0.4 0
+9 -2.4 0.6 1.1 2.5
+24 -1.2431 -0.7896 0.9038 1 3 0.7 0.2 0 0.3 1 0 0 0
+24 3.5 1.2 -2.1 5 3 1.3 0.2 0.4 2 3.3 0 0 0
+24 0.05 0.3 -0.02 5 3 0 0.2 0.3 2 1 0 0 0
+24 2.2 0.5 3.1 5 3 0 0.2 0 2 -1 0 0 0
+24 -1.5 0.4 -4.2 5 2.5 0 0.2 0 2 1 0 0 0
+24 -4.6 -0.9 -1.1 5 -1.7 0.4 0.2 0 2 0.5 0 0 0
+24 4.1 -1.2 2 5 3 0 0.2 0 2 1 1.3 0.5 0.6
+24 -3.3 1.7 2.9 5 3 0 0.5 0 2 1 0 0 0.7
+24 0 0.2 0 1 2.5 0.7 0.2 0 0.3 1 1.5 0.6 0.8
+24 0 0.3 -2 1 2.5 0.7 0.2 0 0.3 1 1.5 0.6 0.8
+24 1.5913 -2.2266 -2.5218 3.725 0 0 -0.119 -0.999 -0.699 0.889 2.613 0.426 -0.419
+24 2.3961 1.6621 1.9925 2.761 0 0 -0.901 0.139 1.616 0.769 -3.399 -1.93 2.211
 CASES
 
 # One function declaration per N used, then one #debug line per case
