@@ -1,6 +1,6 @@
 // functions.inc: every internal function by its functions.inc name at three
-// points (f_comma, f_helical_torus and the noise functions are in
-// stdlib-functions-pending: lucent does not give POV-Ray's values yet).
+// points (f_comma and f_helical_torus are in stdlib-functions-comma, the
+// noise functions in stdlib-functions-noise and stdlib-functions-agate).
 #version 3.7;
 #include "functions.inc"
 #declare Pts = array[3] {<0.3, 0.7, 1.1>, <-0.45, 0.2, -0.35>, <1.3, -0.6, 0.25>}
