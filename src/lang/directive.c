@@ -853,100 +853,80 @@ static void dir_message(struct parser *p, enum kw which, struct srcpos at)
 	free(text);
 }
 
-/* Move the first n characters of the pending #debug line and a newline to
- * the held output; the rest of the line moves to its start. */
-static void debug_emit(struct parser *p, int n)
+/* A character at which POV-Ray's #debug stream may break a line: a space,
+ * tab, vertical tab or form feed (measured; '\n' and '\r' end the line). */
+static bool debug_blank(char c)
 {
-	if (p->debug_nheld + (size_t)n + 1 > p->debug_capheld) {
-		p->debug_capheld = 2 * p->debug_capheld + (size_t)n + 256;
-		p->debug_held = realloc(p->debug_held, p->debug_capheld);
-		if (!p->debug_held) abort();
-	}
-	memcpy(p->debug_held + p->debug_nheld, p->debug_line, (size_t)n);
-	p->debug_nheld += (size_t)n;
-	p->debug_held[p->debug_nheld++] = '\n';
-	memmove(p->debug_line, p->debug_line + n, (size_t)(p->debug_len - n));
-	p->debug_len -= n;
+	return c == ' ' || c == '\t' || c == '\v' || c == '\f';
 }
 
-/* Write the held #debug lines. */
-static void debug_release(struct parser *p, FILE *out)
+/* The last blank among text[lo .. hi - 1], or -1. */
+static int debug_last_blank(const char *text, int lo, int hi)
 {
-	fwrite(p->debug_held, 1, p->debug_nheld, out);
-	p->debug_nheld = 0;
-}
-
-/* The last space in the pending #debug line, or -1. */
-static int debug_last_space(const struct parser *p)
-{
-	for (int i = p->debug_len - 1; i >= 0; i--)
-		if (p->debug_line[i] == ' ')
+	for (int i = hi - 1; i >= lo; i--)
+		if (debug_blank(text[i]))
 			return i;
 	return -1;
 }
 
+/* Write the n characters of text as lines of at most 80 columns, each
+ * ended by a newline. A longer line breaks before its last blank in
+ * columns 62 to 81, which begins the next line, or else after the 80th
+ * character. */
+static void debug_put(FILE *out, const char *text, int n)
+{
+	enum { WIDTH = 80, LOOK = 20 };
+	while (n > WIDTH) {
+		int cut = debug_last_blank(text, WIDTH + 1 - LOOK, WIDTH + 1);
+		if (cut < 0)
+			cut = WIDTH;
+		fwrite(text, 1, (size_t)cut, out);
+		fputc('\n', out);
+		text += cut;
+		n -= cut;
+	}
+	fwrite(text, 1, (size_t)n, out);
+	fputc('\n', out);
+}
+
 /* POV-Ray's #debug stream, measured by running POV-Ray 3.7 on thousands
- * of generated messages (tests/lang/debug-wrap-*):
+ * of generated messages (tests/lang/debug-wrap-*): text goes through a
+ * buffer of 160 characters, which is written, wrapped by debug_put, when
+ * a newline or '\r' comes and when a character arrives that does not fit:
  *  - a message longer than 200 characters is cut to its first 156 and
  *    "..." (its newline, if it had one, is lost with the rest);
- *  - lines are held, and written at a newline and at every 160th
- *    character since the last newline (after the look described below);
- *    what is held when the stream ends is never written;
- *  - a line that would pass 80 characters breaks before its last space
- *    when that space is in column 62 to 80, or when the character that
- *    overflows is a space (the 80 stay whole); else after 80 characters;
- *  - besides, at every 80th character since the last newline the stream
- *    takes a second look at the pending part of the line: at the 80th,
- *    240th, 400th ... it breaks before a last space in column 62 or later;
- *    at the 160th, 320th ... before a last space among its last 39
- *    characters (nothing is written when that space is the first
- *    character), and otherwise writes the whole pending part. A space
- *    arriving at such a point writes the pending part whole.
- * This reproduces POV-Ray byte for byte on the corpus and on 96% of
- * random messages mixing long words, runs of spaces and many #debug
- * calls per line; the rest differ in where a line after several breaks
- * is cut. */
+ *  - when the 161st character arrives, the buffer and that character are
+ *    written up to their last blank if it is among their last 40
+ *    characters, and that blank and what follows stay in the buffer;
+ *    otherwise the 160 are written and the new character stays;
+ *  - what is in the buffer when the stream ends is never written.
+ * Each write ends its last line, so a buffer always begins a line. This
+ * gives POV-Ray's output byte for byte on 2,300 random messages mixing
+ * long words, runs of blanks, newlines and many #debug calls per line. */
 void parse_debug_write(struct parser *p, const char *text)
 {
 	FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
-	enum { WIDTH = (int)sizeof p->debug_line, LONG = 200, KEEP = 156 };
+	enum { SIZE = (int)sizeof p->debug_buf - 1, KEEP = 40, LONG = 200, CUT = 156 };
 	size_t n = strlen(text);
 	bool cut = n > LONG; /* (measured: tests/lang/debug-wrap-long) */
 	if (cut)
-		n = KEEP;
+		n = CUT;
 	for (size_t k = 0; k < n + (cut ? 3 : 0); k++) {
 		char c = k < n ? text[k] : '.';
-		if (c == '\n') {
-			debug_emit(p, p->debug_len);
-			debug_release(p, out);
-			p->debug_col = 0;
+		if (c == '\n' || c == '\r') {
+			debug_put(out, p->debug_buf, p->debug_len);
+			p->debug_len = 0;
 			continue;
 		}
-		if (p->debug_col > 0 && p->debug_col % WIDTH == 0) {
-			int sp = debug_last_space(p);
-			if (c == ' ')
-				debug_emit(p, p->debug_len);
-			else if ((p->debug_col / WIDTH) % 2 == 1) {
-				if (sp >= WIDTH - 19)
-					debug_emit(p, sp);
-			} else if (sp >= 0 && sp >= p->debug_len - 39) {
-				if (sp > 0)
-					debug_emit(p, sp);
-			} else {
-				debug_emit(p, p->debug_len);
-			}
-			if ((p->debug_col / WIDTH) % 2 == 0)
-				debug_release(p, out);
+		p->debug_buf[p->debug_len++] = c;
+		if (p->debug_len > SIZE) {
+			int at = debug_last_blank(p->debug_buf, p->debug_len - KEEP, p->debug_len);
+			if (at < 0)
+				at = SIZE;
+			debug_put(out, p->debug_buf, at);
+			p->debug_len -= at;
+			memmove(p->debug_buf, p->debug_buf + at, (size_t)p->debug_len);
 		}
-		if (p->debug_len == WIDTH) {
-			int sp = c == ' ' ? WIDTH : debug_last_space(p);
-			debug_emit(p, sp >= WIDTH - 19 ? sp : WIDTH);
-		}
-		p->debug_line[p->debug_len++] = c;
-		/* Only the column modulo 160 matters; it stays above 0 once
-		 * the line has begun. */
-		if (++p->debug_col > 2 * WIDTH)
-			p->debug_col -= 2 * WIDTH;
 	}
 	fflush(out);
 }
@@ -955,9 +935,6 @@ void parse_debug_flush(struct parser *p)
 {
 	FILE *out = p->o->debug_out ? p->o->debug_out : stderr;
 	p->debug_len = 0;
-	free(p->debug_held);
-	p->debug_held = NULL;
-	p->debug_nheld = p->debug_capheld = 0;
 	fflush(out);
 }
 

@@ -93,11 +93,8 @@ struct parser {
 	bool rel_ok;
 	int directive_depth;         /* directives inside directives' operands */
 
-	char debug_line[80];         /* #debug text not yet written: POV-Ray wraps */
-	int debug_len;               /* its stream at 80 columns */
-	int debug_col;               /* characters since the last newline */
-	char *debug_held;            /* wrapped #debug lines not yet written */
-	size_t debug_nheld, debug_capheld;
+	char debug_buf[161];         /* #debug text not yet written: POV-Ray */
+	int debug_len;               /* buffers 160 characters (directive.c) */
 	uint32_t *rng;               /* rand() streams made by seed() */
 	int nrng, caprng;
 
@@ -376,7 +373,8 @@ const char *parse_charset_literal(struct parser *p, const char *s, struct srcpos
 char *parse_find_file(struct parser *p, const char *name, uint32_t from_file);
 
 /* Write one #debug message, wrapping lines at 80 columns as POV-Ray does
- * (see directive.c for the rule); a line is written when it ends.
+ * (see directive.c for the rule); text is written when a line ends or
+ * the stream's buffer is full.
  * parse_debug_flush ends the stream: like POV-Ray, it drops a last line
  * that no newline ended. */
 void parse_debug_write(struct parser *p, const char *text);
