@@ -10,7 +10,11 @@
  * deterministic functions reproduce POV-Ray's values to rounding for any
  * parameters, negative, zero and fractional ones included, NaN and
  * infinite results too (tests/unit/fn_internal_sweep.sh compares them on
- * random cases; the unit test holds recorded values).
+ * random cases; the unit test holds recorded values). What is left: where
+ * a value is a small difference of large terms it agrees to the rounding
+ * of the terms only, and an exact zero of some field-strength functions
+ * (f_umbrella, f_witch_of_agnesi, f_strophoid, ...) can have the other
+ * sign than POV-Ray's.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
  * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
@@ -548,13 +552,16 @@ static double f_ellipsoid(const double *a)
  * inverse size P3. */
 static double f_spikes(const double *a)
 {
-	double x = a[0], y = a[1], z = a[2];
-	double r2 = x * x + y * y + z * z;
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double sharp = a[3], s = a[4];
-	double sum = exp(-s * (x * x + sharp * (r2 - x * x)))
-		+ exp(-s * (y * y + sharp * (r2 - y * y)))
-		+ exp(-s * (z * z + sharp * (r2 - z * z)));
-	return a[5] * (sum - a[7] * exp(-a[6] * r2));
+	double ex = exp(-s * (x2 + sharp * (y2 + z2)));
+	double ey = exp(-s * (y2 + sharp * (x2 + z2)));
+	double ez = exp(-s * (z2 + sharp * (x2 + y2)));
+	double ball = a[7] * exp(-a[6] * (x2 + y2 + z2));
+	/* The terms taken from the ball in this order, and the whole negated:
+	 * POV-Ray's rounding where they nearly cancel, and its sign of a zero
+	 * or of a NaN (0 * inf) result (measured). */
+	return a[5] * -(ball - ez - ey - ex);
 }
 
 static double f_spikes_2d(const double *a)

@@ -29,7 +29,8 @@ struct pov_case {
  * the algebraic cylinders with a negative limit (0-3), f_helix1 with no
  * helices, a zero period or a zero stretch (25), f_spiral with a zero or
  * tiny spacing and on the y axis (64), f_quantum on the y axis (53) and
- * f_mesh1 with negative, tiny and zero spacings (40). */
+ * f_mesh1 with negative, tiny and zero spacings (40), and f_spikes where
+ * its terms nearly cancel or give 0 * inf (62). */
 static const struct pov_case pov_cases[] = {
 	{0, 8, {-0.0897, 0.6848, -0.5887, 1.5492, 2.0504, 0.4332, -0.4696, -45.87}, 0.67741115955453901},
 	{0, 8, {0.9377, -0.0051, -0.2524, 0.911, 4.8162, -0.3809, 0.4081, 3.4831}, -0.04988017828833700},
@@ -391,6 +392,8 @@ static const struct pov_case pov_cases[] = {
 	{40, 8, {2.6792, -3.2997, -3.0296, -2, 1.9734e-05, -3.3886, 1, -37.388}, 91.03264309355610351},
 	{40, 8, {0.5, 0.2, 0.3, 0, 1, 1, 0.5, 1}, NAN},
 	{40, 8, {0.5, 0.2, 0.3, 1, 0, 1, 0.5, 1}, NAN},
+	{62, 8, {-2.6026, -3.0552, 0, 0, 3.3443, 1e9, 0, 1}, 0.14525726962782540},
+	{62, 8, {1.2272, -1.5, -3.0119, 0.8094, 0.6304, -1, -295.08, 0}, NAN},
 };
 
 /* The number of parameters (x, y, z and the extras) of each internal
