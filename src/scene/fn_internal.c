@@ -7,9 +7,14 @@
  * The manual (the functions.inc section of the include-files chapter) names
  * the functions and their parameters; the formulas were worked out by
  * evaluating POV-Ray 3.7 at many points and written anew from that. The
- * deterministic functions reproduce POV-Ray's values to rounding (the unit
- * test holds the recorded values), with one exception: f_mesh1 matches
- * for positive thread spacings only.
+ * deterministic functions reproduce POV-Ray's values to rounding for any
+ * parameters, negative, zero and fractional ones included, NaN and
+ * infinite results too (tests/unit/fn_internal_sweep.sh compares them on
+ * random cases; the unit test holds recorded values). What is left: where
+ * a value is a small difference of large terms it agrees to the rounding
+ * of the terms only, and an exact zero of some field-strength functions
+ * (f_umbrella, f_witch_of_agnesi, f_strophoid, ...) can have the other
+ * sign than POV-Ray's.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
  * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
@@ -89,13 +94,14 @@ static void sor(const double *a, double sw, double offset, double angle,
 
 /* The norm of a cross section offset (u, v) for the helix and spiral
  * functions' "cross section type" t: 0 is a square (the max norm), 1 a
- * circle, 2 a diamond, and in general the L(2/t) norm. */
+ * circle, 2 a diamond, and in general the L(2/t) norm. NaN in, NaN out,
+ * as in POV-Ray (its spiral with zero spacing gives NaN here). */
 static double section_norm(double u, double v, double t)
 {
 	u = fabs(u);
 	v = fabs(v);
 	if (t == 0)
-		return u > v ? u : v;
+		return u > v || u != u ? u : v;
 	double p = 2 / t;
 	return pow(pow(u, p) + pow(v, p), 1 / p);
 }
@@ -103,21 +109,38 @@ static double section_norm(double u, double v, double t)
 /* ---- the algebraic cylinders (0-3): P0 field strength, P1 field limit,
  * P2-P4 the SOR switch, offset and angle ---- */
 
-static double algbr_cyl(const double *a, double curve)
+/* POV-Ray's min and max of two values: the first one unless the second is
+ * strictly smaller (larger). Where the two compare equal (0 and -0) or the
+ * second is NaN, the first is the result, which decides the sign of a zero
+ * result as in POV-Ray. */
+static double min_first(double a, double b)
+{
+	return b < a ? b : a;
+}
+
+static double max_first(double a, double b)
+{
+	return a < b ? b : a;
+}
+
+/* P0 * curve kept within [-P1, P1]. A negative limit leaves an empty
+ * range, and POV-Ray's order of the two bounds decides the value:
+ * f_algbr_cyl1 applies the upper bound first and gives -P1, the other
+ * three the lower bound first and give P1 (measured, as are the signs of
+ * a zero result with a zero limit). */
+static double algbr_cyl(const double *a, double curve, int upper_first)
 {
 	double r = a[3] * curve, lim = a[4];
-	if (r > lim)
-		r = lim;
-	if (r < -lim)
-		r = -lim;
-	return r;
+	if (upper_first)
+		return max_first(-lim, min_first(lim, r));
+	return min_first(lim, max_first(-lim, r));
 }
 
 static double f_algbr_cyl1(const double *a)
 {
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
-	return algbr_cyl(a, x * x * (fabs(x) - 1) + y * y);
+	return algbr_cyl(a, x * x * (fabs(x) - 1) + y * y, 1);
 }
 
 static double f_algbr_cyl2(const double *a)
@@ -125,7 +148,7 @@ static double f_algbr_cyl2(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -y2 + 3 * x2 * y + 2 * y2 * y - 2 * x2 * x2 - y2 * y2);
+	return algbr_cyl(a, -y2 + 3 * x2 * y + 2 * y2 * y - 2 * x2 * x2 - y2 * y2, 0);
 }
 
 static double f_algbr_cyl3(const double *a)
@@ -133,7 +156,7 @@ static double f_algbr_cyl3(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -y2 + 2 * x2 * y + x * y2 - x2 * x2 - x2 * y2);
+	return algbr_cyl(a, -y2 + 2 * x2 * y + x * y2 - x2 * x2 - x2 * y2, 0);
 }
 
 static double f_algbr_cyl4(const double *a)
@@ -141,7 +164,7 @@ static double f_algbr_cyl4(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -3 * x2 * y + y2 * y - sq(x2 + y2));
+	return algbr_cyl(a, -3 * x2 * y + y2 * y - sq(x2 + y2), 0);
 }
 
 /* ---- field strength surfaces: P0 field strength, then shape
@@ -529,13 +552,16 @@ static double f_ellipsoid(const double *a)
  * inverse size P3. */
 static double f_spikes(const double *a)
 {
-	double x = a[0], y = a[1], z = a[2];
-	double r2 = x * x + y * y + z * z;
+	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double sharp = a[3], s = a[4];
-	double sum = exp(-s * (x * x + sharp * (r2 - x * x)))
-		+ exp(-s * (y * y + sharp * (r2 - y * y)))
-		+ exp(-s * (z * z + sharp * (r2 - z * z)));
-	return a[5] * (sum - a[7] * exp(-a[6] * r2));
+	double ex = exp(-s * (x2 + sharp * (y2 + z2)));
+	double ey = exp(-s * (y2 + sharp * (x2 + z2)));
+	double ez = exp(-s * (z2 + sharp * (x2 + y2)));
+	double ball = a[7] * exp(-a[6] * (x2 + y2 + z2));
+	/* The terms taken from the ball in this order, and the whole negated:
+	 * POV-Ray's rounding where they nearly cancel, and its sign of a zero
+	 * or of a NaN (0 * inf) result (measured). */
+	return a[5] * -(ball - ez - ey - ex);
 }
 
 static double f_spikes_2d(const double *a)
@@ -544,10 +570,12 @@ static double f_spikes_2d(const double *a)
 	return a[1] - a[3] * cos(a[4] * x) * cos(a[5] * z) * exp(-a[6] * (x * x + z * z));
 }
 
-/* A d orbital's density cloud; P0 is not used. */
+/* A d orbital's density cloud; P0 is not used. On the y axis x counts as
+ * 1e-6 (POV-Ray's values there). */
 static double f_quantum(const double *a)
 {
-	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double x = a[0] == 0 && a[2] == 0 ? 1e-6 : a[0];
+	double x2 = x * x, y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double r = sqrt(x2 + y2 + z2);
 	return 1.2 - 1.6 * sq(2 * y2 - x2 - z2) * exp(-1.33333332 * r);
 }
@@ -678,30 +706,40 @@ static double f_hex_y(const double *a)
 			fmin(wrap_dist(s * x - 0.5 * y, 1.5), wrap_dist(s * x + 0.5 * y, 1.5)));
 }
 
+/* The distance from v to the nearest of the points off + (2k + 1) s (k
+ * any integer), up to its sign, measured as POV-Ray does:
+ * fmod(|v - off|, 2s) - s. For a positive s its size is the true distance;
+ * for a negative s it is one spacing more (|v - off| mod 2|s| plus |s|,
+ * measured from off alone), and a zero s gives NaN. All three are
+ * POV-Ray's values. The caller squares it, which keeps the sign POV-Ray's
+ * NaN has. */
+static double thread_dist(double v, double s, double off)
+{
+	return fmod(fabs(v - off), 2 * s) - s;
+}
+
 /* Threads along z at x = i P0 and along x at z = j P1, weaving up and down
  * with amplitude P3; P2 scales the distance across a thread, P4 along y.
- * (POV-Ray's values for negative spacings differ.) */
+ * Each direction has two families of threads, those at odd multiples of
+ * the spacing and those at even ones, which weave in opposite senses; the
+ * value is the nearest thread's scaled distance. The formulas, negative
+ * and zero spacings included, are POV-Ray's (measured: a negative spacing
+ * puts each family's nearest thread one spacing further, see
+ * thread_dist()). A NaN distance (zero spacing) stays the value only if it
+ * comes first: later ones lose every comparison, as in POV-Ray. */
 static double f_mesh1(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
 	double sx = a[3], sz = a[4], wxz = a[5], amp = a[6], wy = a[7];
-	double best = HUGE_VAL;
-	double i0 = floor(x / sx), j0 = floor(z / sz);
-	for (int k = 0; k < 2; k++) {
-		double i = i0 + k;
-		double sign = fmod(i, 2) == 0 ? -1 : 1;
-		double yc = sign * amp * cos(M_PI * z / sz);
-		double d = hypot((x - i * sx) * wxz, (y - yc) * wy);
-		if (d < best)
-			best = d;
-	}
-	for (int k = 0; k < 2; k++) {
-		double j = j0 + k;
-		double sign = fmod(j, 2) == 0 ? 1 : -1;
-		double yc = sign * amp * cos(M_PI * x / sx);
-		double d = hypot((z - j * sz) * wxz, (y - yc) * wy);
-		if (d < best)
-			best = d;
+	double cz = amp * cos(z * (M_PI / sz)), cx = amp * cos(x * (M_PI / sx));
+	const double d[4] = {thread_dist(x, sx, 0), thread_dist(x, sx, sx),
+		thread_dist(z, sz, 0), thread_dist(z, sz, sz)};
+	const double yc[4] = {cz, -cz, -cx, cx};
+	double best = 0;
+	for (int k = 0; k < 4; k++) {
+		double v = sqrt(sq(d[k] * wxz) + sq((y - yc[k]) * wy));
+		if (k == 0 || v < best)
+			best = v;
 	}
 	return best;
 }
@@ -719,13 +757,16 @@ static double f_helix1(const double *a)
 	double x = a[0], y = a[1], z = a[2];
 	double n = a[3], per = a[4], R = a[6];
 	double rho = sqrt(x * x + z * z);
-	double d = y + (atan2(z, x) - M_PI / n) / per;
-	double w = 2 * M_PI / (n * per);
-	d -= w * floor(d / w + 0.5);
+	double ph = atan2(z, x) + per * y;
+	double k = floor(ph * n / (2 * M_PI));
+	double d = (ph - (2 * M_PI * k + M_PI) / n) / per;
 	double u = rho - R, v = d / a[7];
-	double t = a[9] * (M_PI / 180);
-	double s = section_norm(u * cos(t) - v * sin(t), u * sin(t) + v * cos(t), a[8]);
-	return fmin(s, rho + R) - a[5];
+	if (a[9] != 0) {
+		double t = a[9] * (M_PI / 180), ur = u * cos(t) - v * sin(t);
+		v = u * sin(t) + v * cos(t);
+		u = ur;
+	}
+	return fmin(section_norm(u, v, a[8]), rho + R) - a[5];
 }
 
 /* One helix: the point is turned by -P1 y about the y axis and measured in
@@ -741,14 +782,22 @@ static double f_helix2(const double *a)
 }
 
 /* An Archimedean spiral in the xz plane, P0 between windings, P1 thick,
- * cut off by a sphere of radius P2; P5 is the cross section type. */
+ * cut off by a sphere of radius P2; P5 is the cross section type. The
+ * cross section never exceeds the distance r from the origin, and on the y
+ * axis r is measured as if x were 1e-6 (POV-Ray's values: at the origin
+ * the spiral of zero thickness gives 1e-6). With a zero spacing the cross
+ * section is NaN and the sphere alone gives the value (POV-Ray's), hence
+ * the NaN-keeping comparison and fmax. */
 static double f_spiral(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2], d = a[3];
 	double rho = sqrt(x * x + z * z);
-	double w = fmod(rho / d + atan2(z, x) / (2 * M_PI), 1.0);
-	double s = fmin(section_norm(d * (w - 0.5), y, a[8]), sqrt(rho * rho + y * y));
-	double r = sqrt(x * x + y * y + z * z);
+	double u = fmod(rho + d * atan2(z, x) / (2 * M_PI), d) - d / 2;
+	double s = section_norm(u, y, a[8]);
+	double xr = x == 0 && z == 0 ? 1e-6 : x;
+	double r = sqrt(xr * xr + y * y + z * z);
+	if (s > r)
+		s = r;
 	return fmax(s - a[4], r - a[5]);
 }
 
