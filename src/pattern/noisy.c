@@ -399,21 +399,33 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		break;
 	}
 	case PAT_FACETS: {
-		/* facets size F: the normal quantised to a grid of cell size F and
-		 * turned by the cell's random direction; coords S: the normal of
-		 * the crackle cell at S × p. */
-		double size = pt->vec.x > 0 ? pt->vec.x : 0.1, coords = pt->vec.y;
+		/* Measured from POV-Ray's renders (normal solved per pixel, within
+		 * its 16-bit output): the bump size, accuracy, noise_generator
+		 * and, with size, the warps play no part. n faces the ray and is
+		 * taken into pattern space like the other special normals. */
+		double size = pt->vec.x, coords = pt->vec.y;
+		vec3 np = unit_or(pattern_normal_in(pt, n), n), m;
 		struct nearest nr;
-		if (coords != 0)
-			crackle_search(v3_scale(q, coords), 2, 0, &nr);
-		else
-			crackle_search(v3_scale(n, 1.0 / size), 2, 0, &nr);
-		vec3 r = dnoise3(v3_add(nr.point, v3(0.5, 0.5, 0.5)), gen);
-		d = v3_scale(r, amount);
-		/* only the part across the surface tilts it */
-		d = v3_madd(d, n, -v3_dot(d, n));
-		vec3 m = v3_norm(v3_add(n, d));
-		*out = v3_len(m) > 0 ? m : n;
+		if (!(size > 0)) {
+			/* POV-Ray leaves the normal alone with size 0 or less
+			 * (with coords too it gives noise from cells at infinity). */
+			*out = n;
+			return true;
+		}
+		if (coords != 0) {
+			/* The crackle cell of q / size (q after the warps); each
+			 * tilts n by coords × DNoise at its feature point, less
+			 * the part along n. */
+			crackle_search(v3_scale(q, 1 / size), 2, 0, &nr);
+			vec3 r = dnoise3(nr.point, gen);
+			m = v3_madd(np, v3_madd(r, np, -v3_dot(r, np)), coords);
+		} else {
+			/* The normal snapped to the feature point nearest n / size:
+			 * a flat surface keeps one tilted normal. */
+			crackle_search(v3_scale(np, 1 / size), 2, 0, &nr);
+			m = nr.point;
+		}
+		*out = unit_or(pattern_normal_out(pt, m), n);
 		return true;
 	}
 	default:
