@@ -5,9 +5,10 @@
  * bozo, spotted, bumps, dents, granite, wrinkles, marble, wood, agate,
  * ripples, waves, and their turbulence (generators 1, 2 and 3) agree with
  * it to 1e-10; so do cells and crackle, from POV-Ray's cell random numbers
- * (cell_table.h). The normals of bumps, dents, wrinkles, ripples and waves
- * were measured from renders (kinds.h) and agree to 3e-5; facets' normal
- * follows POV-Ray's description but not its renders (doc/materials.md). */
+ * (cell_table.h). The normals of bumps, dents, wrinkles, ripples, waves
+ * and facets were measured from renders (kinds.h; facets: the normal solved
+ * per pixel from lights along the axes) and agree to 3e-5 (facets to 8e-6,
+ * the renders' resolution, except with metric, which lucent ignores). */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
