@@ -1,7 +1,7 @@
 // pat-facets.pov: the facets normal in both its forms: size (the normal
 // snapped to a perturbed grid of normals: flat faces on the spheres,
-// one tilt on a flat surface) and coords (crackle cells of size 0.1 x size,
-// tilted by coords), with a bump size, transforms and turbulence, on
+// one tilt on a flat surface) and coords (the crackle cells of p / size,
+// tilted by coords), with a bump size, transforms, turbulence and a metric, on
 // spheres, a plane and a box.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -19,4 +19,4 @@ Ball(-0.8, 0, normal { facets size 0.3 })
 Ball(0.8, 0, normal { facets 0.5 size 0.5 rotate 30*z scale <1, 2, 1> })
 Ball(2.4, 0, normal { facets coords 0.6 size 0.15 turbulence 0.3 })
 box { <-3, 0, -0.1>, <3, 2.2, 0.1> translate <0, 0, 1.4>
-      texture { pigment { P } normal { facets coords 1 size 0.2 scale 1.5 translate 0.2 } finish { F } } }
+      texture { pigment { P } normal { facets coords 1 size 0.2 metric 3 scale 1.5 translate 0.2 } finish { F } } }

@@ -8,7 +8,7 @@
  * (cell_table.h). The normals of bumps, dents, wrinkles, ripples, waves
  * and facets were measured from renders (kinds.h; facets: the normal solved
  * per pixel from lights along the axes) and agree to 3e-5 (facets to 8e-6,
- * the renders' resolution, except with metric, which lucent ignores). */
+ * the renders' resolution, except with metric 1: see pattern_special_normal). */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
@@ -403,8 +403,13 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		/* Measured from POV-Ray's renders (normal solved per pixel, within
 		 * its 16-bit output): the bump size, accuracy, noise_generator
 		 * and, with size, the warps play no part. n faces the ray and is
-		 * taken into pattern space like the other special normals. */
+		 * taken into pattern space like the other special normals. The
+		 * cells are crackle's in the pattern's metric, as POV-Ray's for
+		 * every metric but 1, where its facets are unit cubes of q / size
+		 * whose normals come from farther feature points by a rule not
+		 * found (lucent keeps crackle's metric-1 cells). */
 		double size = pt->vec.x, coords = pt->vec.y;
+		double metric = pt->f[0] != 0 ? pt->f[0] : 2;      /* pattern.h: facets metric f[0] */
 		vec3 np = unit_or(pattern_normal_in(pt, n), n), m;
 		struct nearest nr;
 		if (!(size > 0)) {
@@ -417,13 +422,13 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 			/* The crackle cell of q / size (q after the warps); each
 			 * tilts n by coords × DNoise at its feature point, less
 			 * the part along n. */
-			crackle_search(v3_scale(q, 1 / size), 2, 0, &nr);
+			crackle_search(v3_scale(q, 1 / size), metric, 0, &nr);
 			vec3 r = dnoise3(nr.point, gen);
 			m = v3_madd(np, v3_madd(r, np, -v3_dot(r, np)), coords);
 		} else {
 			/* The normal snapped to the feature point nearest n / size:
 			 * a flat surface keeps one tilted normal. */
-			crackle_search(v3_scale(np, 1 / size), 2, 0, &nr);
+			crackle_search(v3_scale(np, 1 / size), metric, 0, &nr);
 			m = nr.point;
 		}
 		*out = unit_or(pattern_normal_out(pt, m), n);
