@@ -679,6 +679,24 @@ static void test_facets_normal(void **state)
 		assert_vec_near(out, m[i].want.x, m[i].want.y, m[i].want.z, 3e-5);
 		pattern_clear(&pt);
 	}
+	/* metric 1 (the 81 cubes' point of smallest coordinate sum) and 0
+	 * (their first point), measured the same way */
+	static const struct { double metric, coords; vec3 p, n, want; } mm[] = {
+		{1, 0, {-0.4875, 0.7375, -1.08555861196}, {-0.34821428571, 0.52678571429, -0.77539900854},
+		 {-0.44378, 0.38163, -0.81082}},
+		{1, 0, {0.2625, -0.2625, -1.349884254297}, {0.1875, -0.1875, -0.96420303878}, {0.02103, -0.27352, -0.96164}},
+		{0, 1, {-0.2375, 0.4875, -1.290712012805}, {-0.16964285714, 0.34821428571, -0.92193715200},
+		 {-0.16522, 0.29799, -0.94015}},
+	};
+	for (size_t i = 0; i < sizeof mm / sizeof mm[0]; i++) {
+		struct pattern pt = pattern_make(PAT_FACETS);
+		pt.vec.y = mm[i].coords;
+		pt.f[0] = mm[i].metric;
+		struct pattern_ctx c = ctx_at(mm[i].p);
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 1, c.p, mm[i].n, &c, &out));
+		assert_vec_near(out, mm[i].want.x, mm[i].want.y, mm[i].want.z, 3e-5);
+	}
 	/* size 0 or less leaves the normal alone, as in POV-Ray */
 	struct pattern pt = pattern_make(PAT_FACETS);
 	pt.vec.x = -0.3;
