@@ -5,14 +5,16 @@
  * bozo, spotted, bumps, dents, granite, wrinkles, marble, wood, agate,
  * ripples, waves, and their turbulence (generators 1, 2 and 3) agree with
  * it to 1e-10; so do cells and crackle, from POV-Ray's cell random numbers
- * (cell_table.h). The normals of bumps, dents, wrinkles, ripples and waves
- * were measured from renders (kinds.h) and agree to 3e-5; facets' normal
- * follows POV-Ray's description but not its renders (doc/materials.md). */
+ * (cell_table.h). The normals of bumps, dents, wrinkles, ripples, waves
+ * and facets were measured from renders (kinds.h; facets: the normal solved
+ * per pixel from lights along the axes) and agree to 3e-5 (facets to 8e-6,
+ * the renders' resolution). */
 #include "pattern/kinds.h"
 #include "pattern/cell_table.h"
 #include "pattern/noise_table.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* The generator a pattern uses: its own, else the scene's, else 2. */
 static int gen_of(const struct pattern *pt, const struct pattern_ctx *ctx)
@@ -297,6 +299,46 @@ PATTERN_FN(crackle)
 	return v < 0 ? 0 : v > 1 ? 1 : v;
 }
 
+/* The feature point facets takes with metric 1 or 0: of the 81 cubes
+ * around q's (the 5 x 5 x 5 block less the cubes two away along two or
+ * three axes), with metric 1 the point whose coordinates have the
+ * smallest sum, with metric 0 the first (x, then y, then z, from -2).
+ * Measured: POV-Ray's facets take a metric-1 distance as the sum of the
+ * signed differences and find every metric-0 distance equal; their facets
+ * are then unit cubes (every normal of a plane and a sphere in both forms
+ * matches this, where crackle's true metric-1 cells matched none). */
+static vec3 facets_block_point(vec3 q, double metric)
+{
+	double ci = floor(q.x), cj = floor(q.y), ck = floor(q.z);
+	vec3 best = q;
+	double low = INFINITY;
+	for (int i = -2; i <= 2; i++)
+		for (int j = -2; j <= 2; j++)
+			for (int k = -2; k <= 2; k++) {
+				if ((abs(i) == 2) + (abs(j) == 2) + (abs(k) == 2) > 1)
+					continue;
+				vec3 c = cell_point(ci + i, cj + j, ck + k);
+				if (metric == 0)
+					return c;
+				if (c.x + c.y + c.z < low) {
+					low = c.x + c.y + c.z;
+					best = c;
+				}
+			}
+	return best;
+}
+
+/* The feature point the facets normal takes at q: crackle's nearest in
+ * the given metric, but for metrics 1 and 0. */
+static vec3 facets_point(vec3 q, double metric)
+{
+	if (metric == 1 || metric == 0)
+		return facets_block_point(q, metric);
+	struct nearest nr;
+	crackle_search(q, metric, 0, &nr);
+	return nr.point;
+}
+
 /* facets as a value (it is a normal pattern): the nearest cell's value, as
  * solid crackle's. */
 PATTERN_FN(facets)
@@ -399,21 +441,33 @@ bool pattern_special_normal(const struct pattern *pt, double amount, vec3 p, vec
 		break;
 	}
 	case PAT_FACETS: {
-		/* facets size F: the normal quantised to a grid of cell size F and
-		 * turned by the cell's random direction; coords S: the normal of
-		 * the crackle cell at S × p. */
-		double size = pt->vec.x > 0 ? pt->vec.x : 0.1, coords = pt->vec.y;
-		struct nearest nr;
-		if (coords != 0)
-			crackle_search(v3_scale(q, coords), 2, 0, &nr);
-		else
-			crackle_search(v3_scale(n, 1.0 / size), 2, 0, &nr);
-		vec3 r = dnoise3(v3_add(nr.point, v3(0.5, 0.5, 0.5)), gen);
-		d = v3_scale(r, amount);
-		/* only the part across the surface tilts it */
-		d = v3_madd(d, n, -v3_dot(d, n));
-		vec3 m = v3_norm(v3_add(n, d));
-		*out = v3_len(m) > 0 ? m : n;
+		/* Measured from POV-Ray's renders (normal solved per pixel, within
+		 * its 16-bit output): the bump size, accuracy, noise_generator
+		 * and, with size, the warps play no part. n faces the ray and is
+		 * taken into pattern space like the other special normals. The
+		 * cells are crackle's in the pattern's metric, but for metrics 1
+		 * and 0 (facets_block_point). */
+		double size = pt->vec.x, coords = pt->vec.y;
+		double metric = pt->f[0];                          /* pattern.h: facets metric f[0] */
+		vec3 np = unit_or(pattern_normal_in(pt, n), n), m;
+		if (!(size > 0)) {
+			/* POV-Ray leaves the normal alone with size 0 or less
+			 * (with coords too it gives noise from cells at infinity). */
+			*out = n;
+			return true;
+		}
+		if (coords != 0) {
+			/* The crackle cell of q / size (q after the warps); each
+			 * tilts n by coords × DNoise at its feature point, less
+			 * the part along n. */
+			vec3 r = dnoise3(facets_point(v3_scale(q, 1 / size), metric), gen);
+			m = v3_madd(np, v3_madd(r, np, -v3_dot(r, np)), coords);
+		} else {
+			/* The normal snapped to the feature point nearest n / size:
+			 * a flat surface keeps one tilted normal. */
+			m = facets_point(v3_scale(np, 1 / size), metric);
+		}
+		*out = unit_or(pattern_normal_out(pt, m), n);
 		return true;
 	}
 	default:

@@ -85,6 +85,7 @@ struct pattern pattern_make(enum pattern_kind k)
 		break;
 	case PAT_FACETS:
 		pt.vec = v3(0.1, 0, 0);          /* size, coords */
+		pt.f[0] = 2.0;                   /* metric */
 		break;
 	case PAT_GRADIENT:
 		pt.vec = v3(1, 0, 0);

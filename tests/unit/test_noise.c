@@ -588,7 +588,8 @@ static void test_number_of_waves(void **state)
 static void test_special_normals(void **state)
 {
 	(void)state;
-	enum pattern_kind kinds[] = {PAT_BUMPS, PAT_DENTS, PAT_WRINKLES, PAT_RIPPLES, PAT_WAVES, PAT_FACETS};
+	/* (facets ignores the amount: test_facets_normal) */
+	enum pattern_kind kinds[] = {PAT_BUMPS, PAT_DENTS, PAT_WRINKLES, PAT_RIPPLES, PAT_WAVES};
 	vec3 n = v3(0, 1, 0);
 	for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
 		struct pattern pt = pattern_make(kinds[i]);
@@ -631,6 +632,80 @@ static void test_special_normals(void **state)
 	assert_false(pattern_special_normal(&g, 0.5, c.p, n, &c, &out));
 }
 
+/* The facets normal against POV-Ray's: normal { facets ... } on
+ * sphere { 0, 1.4 } and plane { <-0.3, 0.4, -1>, 0 } seen along +z by an
+ * orthographic camera, lit by parallel shadowless lights along +-x, +-y and
+ * +-z coloured red, green and blue (two renders, 16-bit linear PPM, diffuse
+ * 1, brilliance 1), the normal read per pixel (so within 3e-5); p and n
+ * are the pixel's point and unit normal. */
+static void test_facets_normal(void **state)
+{
+	(void)state;
+	static const struct {
+		double size, coords, amount;
+		int xf;        /* 1: scale <1, 2, 1>; 2: rotate 30*z */
+		vec3 p, n, want;
+	} m[] = {
+		/* facets (size 0.1), facets 0.5 (the amount plays no part) */
+		{0.1, 0, 1, 0, {-0.4875, 0.7375, -1.08555861196}, {-0.34821428571, 0.52678571429, -0.77539900854},
+		 {-0.34171, 0.55775, -0.7564}},
+		{0.1, 0, 0.5, 0, {0.3875, -0.3875, -1.288288593445}, {0.27678571429, -0.27678571429, -0.92020613817},
+		 {0.3019, -0.23685, -0.92345}},
+		/* facets size 0.3 */
+		{0.3, 0, 1, 0, {0.5125, -0.5125, -1.197784412989}, {0.36607142857, -0.36607142857, -0.85556029499},
+		 {0.32049, -0.29628, -0.89972}},
+		/* facets coords 1 on the plane; facets 2 coords 1 */
+		{0.1, 1, 1, 0, {-0.2375, 0.2375, 0.16625}, {-0.26832815730, 0.35777087640, -0.89442719100},
+		 {-0.26635, 0.13379, -0.95454}},
+		{0.1, 1, 2, 0, {-1.4875, -0.7625, 0.14125}, {-0.26832815730, 0.35777087640, -0.89442719100},
+		 {-0.18656, 0.64558, -0.74055}},
+		/* facets coords 1 scale <1, 2, 1> */
+		{0.1, 1, 1, 1, {1.0125, 0.4875, -0.10875}, {-0.26832815730, 0.35777087640, -0.89442719100},
+		 {-0.32532, 0.20407, -0.92332}},
+		/* facets rotate 30*z on the sphere */
+		{0.1, 0, 1, 2, {-0.7375, 0.4875, -1.08555861196}, {-0.52678571429, 0.34821428571, -0.77539900854},
+		 {-0.57481, 0.31217, -0.7564}},
+	};
+	for (size_t i = 0; i < sizeof m / sizeof m[0]; i++) {
+		struct pattern pt = pattern_make(PAT_FACETS);
+		pt.vec = v3(m[i].size, m[i].coords, 0);
+		if (m[i].xf) {
+			struct xform t = m[i].xf == 1 ? xform_scale(v3(1, 2, 1)) : xform_rotate(v3(0, 0, 30));
+			pattern_transform(&pt, &t);
+		}
+		struct pattern_ctx c = ctx_at(m[i].p);
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, m[i].amount, c.p, m[i].n, &c, &out));
+		assert_vec_near(out, m[i].want.x, m[i].want.y, m[i].want.z, 3e-5);
+		pattern_clear(&pt);
+	}
+	/* metric 1 (the 81 cubes' point of smallest coordinate sum) and 0
+	 * (their first point), measured the same way */
+	static const struct { double metric, coords; vec3 p, n, want; } mm[] = {
+		{1, 0, {-0.4875, 0.7375, -1.08555861196}, {-0.34821428571, 0.52678571429, -0.77539900854},
+		 {-0.44378, 0.38163, -0.81082}},
+		{1, 0, {0.2625, -0.2625, -1.349884254297}, {0.1875, -0.1875, -0.96420303878}, {0.02103, -0.27352, -0.96164}},
+		{0, 1, {-0.2375, 0.4875, -1.290712012805}, {-0.16964285714, 0.34821428571, -0.92193715200},
+		 {-0.16522, 0.29799, -0.94015}},
+	};
+	for (size_t i = 0; i < sizeof mm / sizeof mm[0]; i++) {
+		struct pattern pt = pattern_make(PAT_FACETS);
+		pt.vec.y = mm[i].coords;
+		pt.f[0] = mm[i].metric;
+		struct pattern_ctx c = ctx_at(mm[i].p);
+		vec3 out;
+		assert_true(pattern_special_normal(&pt, 1, c.p, mm[i].n, &c, &out));
+		assert_vec_near(out, mm[i].want.x, mm[i].want.y, mm[i].want.z, 3e-5);
+	}
+	/* size 0 or less leaves the normal alone, as in POV-Ray */
+	struct pattern pt = pattern_make(PAT_FACETS);
+	pt.vec.x = -0.3;
+	struct pattern_ctx c = ctx_at(v3(0.3, 0.2, 0.1));
+	vec3 out;
+	assert_true(pattern_special_normal(&pt, 1, c.p, v3(0, 0.6, -0.8), &c, &out));
+	assert_vec_near(out, 0, 0.6, -0.8, 1e-15);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -654,6 +729,7 @@ int main(void)
 		cmocka_unit_test(test_number_of_waves),
 		cmocka_unit_test(test_ripples_waves_character),
 		cmocka_unit_test(test_special_normals),
+		cmocka_unit_test(test_facets_normal),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
