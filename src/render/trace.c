@@ -408,9 +408,24 @@ static rgb area_test(void *vctx, vec3 target, int column)
 	return light_through(c->tr, c->L->slot + (size_t)column, c->lc, c->from, dir, d, c->eps, c->med);
 }
 
+/* Whether one of the n perturbed normals faces dir. */
+static bool faces_any(const vec3 *normals, int n, vec3 dir)
+{
+	for (int i = 0; i < n; i++)
+		if (v3_dot(normals[i], dir) > 0)
+			return true;
+	return false;
+}
+
 /* Light every light of s's light group casts on s (into tr->lit); false
- * if none reaches. */
-static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_wanted)
+ * if none reaches. normals are the layers' perturbed normals: a light
+ * behind the surface that one of them faces still lights it, as in
+ * POV-Ray (measured: a bumpy plane lit from below its horizon shows the
+ * bumps that face the light, and a shadowless light past a bumpy
+ * sphere's terminator lights it); the shadow ray then leaves from the
+ * light's side of the surface. */
+static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_wanted,
+                          const vec3 *normals, int nnormals)
 {
 	const struct light_set *ls = tr->lights;
 	size_t g = (size_t)s->obj->light_group < ls->ngroups ? (size_t)s->obj->light_group : 0;
@@ -433,17 +448,20 @@ static bool gather_lights(struct tracer *tr, const struct surface *s, bool back_
 		if (c == 0)
 			continue;
 		l->back = c < 0;
+		bool lift_back = l->back;
 		if (l->back && !back_wanted) {
 			/* Part of an area_illumination grid may still be in front
 			 * (POV-Ray lights from those points, measured). */
-			if (!L->illum)
+			if (L->illum)
+				lift_back = false;
+			else if (!faces_any(normals, nnormals, l->dir))
 				continue;
 			l->back = false;
 		}
 		l->highlights = L->highlights;
 		l->pts = NULL;
 		l->npts = 0;
-		vec3 side = l->back ? v3_neg(s->n) : s->n;
+		vec3 side = lift_back ? v3_neg(s->n) : s->n;
 		vec3 from = v3_madd(s->pt, side, s->eps);
 		if (L->illum) {
 			/* The cones and fading are those of each grid point
@@ -733,7 +751,12 @@ static rgb shade_layers(struct tracer *tr, const struct texture *t, const struct
 		col = rgb_add(col, rgb_mul(y->above, rgb_scale(rgb_mul(a, y->pig), y->opacity)));
 	}
 
-	if (sc->nlights && gather_lights(tr, s, back_wanted)) {
+	vec3 normals[MAX_LAYERS];
+	int nnormals = 0;
+	if (feat & FEAT_NORMALS)
+		for (int i = 0; i < nl; i++)
+			normals[nnormals++] = L[i].n;
+	if (sc->nlights && gather_lights(tr, s, back_wanted, normals, nnormals)) {
 		bool dbl = (s->obj->flags & OBJ_DOUBLE_ILLUMINATE) != 0;
 		for (size_t li = 0; li < sc->nlights; li++) {
 			const struct lit *lt = &tr->lit[li];
