@@ -89,8 +89,10 @@ static void set_compare(const struct render_opts *o, struct smp *s)
 }
 
 /* The sample at image position (x, y), for sample `sample` of pixel
- * (px, py) (the hash inputs of what the camera chooses at random). */
-static struct smp take(struct worker *w, double x, double y, int px, int py, uint32_t sample)
+ * (px, py) (the hash inputs of what the camera chooses at random), with
+ * its comparison values if `compare` (method 1's supersamples are only
+ * averaged, never compared). */
+static struct smp take(struct worker *w, double x, double y, int px, int py, uint32_t sample, bool compare)
 {
 	const struct render_opts *o = w->job->o;
 	bool any;
@@ -100,7 +102,7 @@ static struct smp take(struct worker *w, double x, double y, int px, int py, uin
 	/* The mean transmit of the camera's rays; where the camera has no ray
 	 * (outside a fisheye's circle) the pixel is transparent, as in POV-Ray. */
 	s.alpha = w->tr.camera_rays ? 1 - w->tr.camera_transmit / w->tr.camera_rays : 0;
-	if (o->aa_method)
+	if (compare)
 		set_compare(o, &s);
 	w->tr.stats.samples++;
 	return s;
@@ -148,7 +150,7 @@ static void supersample(struct worker *w, struct smp *s, int x, int y)
 			uint32_t k = (uint32_t)(1 + j * n + i);
 			double sx = x + (i + 0.5) * cell + jitter(o, (uint32_t)x, (uint32_t)y, k, JITTER_X, cell);
 			double sy = y + (j + 0.5) * cell + jitter(o, (uint32_t)x, (uint32_t)y, k, JITTER_Y, cell);
-			struct smp t = take(w, sx, sy, x, y, k);
+			struct smp t = take(w, sx, sy, x, y, k, false);
 			sum = rgb_add(sum, t.c);
 			alpha += t.alpha;
 		}
@@ -169,7 +171,7 @@ static void tile_method1(struct worker *w, int x0, int y0, int x1, int y1)
 	struct smp *cells = w->cells;
 	for (int y = ey0; y < y1; y++)
 		for (int x = ex0; x < x1; x++) {
-			cells[(y - ey0) * stride + (x - ex0)] = take(w, x + 0.5, y + 0.5, x, y, 0);
+			cells[(y - ey0) * stride + (x - ex0)] = take(w, x + 0.5, y + 0.5, x, y, 0, true);
 			cells[(y - ey0) * stride + (x - ex0)].super = false;
 		}
 	for (int y = y0; y < y1; y++)
@@ -229,7 +231,7 @@ static const struct smp *m2_sample(struct worker *w, int x0, int y0, int px, int
 	double cell = 1.0 / n;
 	double sx = gx * cell + jitter(o, gx, gy, 0, JITTER_X, cell);
 	double sy = gy * cell + jitter(o, gx, gy, 0, JITTER_Y, cell);
-	*s = take(w, sx, sy, (int)gx, (int)gy, 0);
+	*s = take(w, sx, sy, (int)gx, (int)gy, 0, true);
 	return s;
 }
 
@@ -303,7 +305,7 @@ static void render_tile(struct worker *w, int tile)
 	}
 	for (int y = y0; y < y1; y++)
 		for (int x = x0; x < x1; x++) {
-			struct smp s = take(w, x + 0.5, y + 0.5, x, y, 0);
+			struct smp s = take(w, x + 0.5, y + 0.5, x, y, 0, false);
 			put(j, x, y, &s);
 		}
 }
