@@ -72,19 +72,36 @@ struct job {
 	atomic_bool stopped;
 };
 
+/* The last value set_compare raised to aa_exponent per channel, and the
+ * result: flat areas (a background, a plain colour, a checker's two
+ * colours) give the same channel values again and again, and pow is the
+ * dearest step of a method 2 sample on such a scene. */
+struct pow_memo {
+	double in[3], out[3];
+};
+
 struct worker {
 	struct job *job;
 	struct tracer tr;
 	pthread_t thread;
 	struct smp *cells;  /* method 1: the tile and its left column and upper row */
 	struct m2cache m2;
+	struct pow_memo memo;
 };
 
-static void set_compare(const struct render_opts *o, struct smp *s)
+static void set_compare(const struct render_opts *o, struct pow_memo *m, struct smp *s)
 {
 	double e = o->aa_exponent, ch[3] = {s->c.r, s->c.g, s->c.b};
-	for (int k = 0; k < 3; k++)
-		s->g[k] = e == 1 ? ch[k] : pow(fmax(ch[k], 0), e);
+	for (int k = 0; k < 3; k++) {
+		if (e == 1) {
+			s->g[k] = ch[k];
+		} else if (ch[k] == m->in[k]) {
+			s->g[k] = m->out[k];
+		} else {
+			m->in[k] = ch[k];
+			s->g[k] = m->out[k] = pow(fmax(ch[k], 0), e);
+		}
+	}
 	s->g[3] = o->alpha ? 1 - s->alpha : 0;
 }
 
@@ -103,7 +120,7 @@ static struct smp take(struct worker *w, double x, double y, int px, int py, uin
 	 * (outside a fisheye's circle) the pixel is transparent, as in POV-Ray. */
 	s.alpha = w->tr.camera_rays ? 1 - w->tr.camera_transmit / w->tr.camera_rays : 0;
 	if (compare)
-		set_compare(o, &s);
+		set_compare(o, &w->memo, &s);
 	w->tr.stats.samples++;
 	return s;
 }
@@ -157,7 +174,7 @@ static void supersample(struct worker *w, struct smp *s, int x, int y)
 	double inv = 1.0 / (n * n + 1);
 	s->c = rgb_scale(sum, inv);
 	s->alpha = alpha * inv;
-	set_compare(o, s);
+	set_compare(o, &w->memo, s);
 	s->super = true;
 	w->tr.stats.aa_pixels++;
 }
@@ -413,6 +430,8 @@ bool render_image(const struct prepared *p, const struct render_opts *o, struct 
 		w[i].job = &j;
 		tracer_init(&w[i].tr, p);
 		worker_scratch(&w[i], o);
+		for (int k = 0; k < 3; k++)
+			w[i].memo.in[k] = NAN; /* equal to no colour */
 	}
 	/* Thread 0's work runs in workers started like the others; the calling
 	 * thread draws progress. */
