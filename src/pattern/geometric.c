@@ -27,12 +27,14 @@ static const double SQRT3 = 1.73205080756887729353;
  * not at -1e-11). */
 static const double BLOCK_EPS = 1e-10;
 
-/* The colour index of a checker: the parity of the sum of the cells. */
+/* The colour index of a checker: the parity of the sum of the cells. The
+ * sum is a whole number, so s - 2 floor(s/2) is exactly fabs(fmod(s, 2))
+ * (0 or 1; NaN for infinite coordinates), without fmod's library call. */
 PATTERN_FN(checker)
 {
 	(void)pt; (void)ctx;
 	double s = floor(q.x + BLOCK_EPS) + floor(q.y + BLOCK_EPS) + floor(q.z + BLOCK_EPS);
-	return fabs(fmod(s, 2.0));
+	return fabs(s - 2.0 * floor(0.5 * s));
 }
 
 /* Hexagons in the x-z plane with unit sides, flat sides facing ±z: centres

@@ -42,9 +42,16 @@ enum { PURPOSE_LENS = 0x4c454e00u };
 /* The bokeh's sampling table: BOKEH_N x BOKEH_N cells of the unit square. */
 enum { BOKEH_N = 128 };
 
+/* The Halton bases of the lens sample's four dimensions: lens u and v,
+ * pixel x and y. */
+static const uint32_t HALTON_BASES[4] = {2, 3, 5, 7};
+
 struct lens {
 	int min, max;
 	double *limit;   /* [n], n = 0..max: the variance limit at a check point, -1 elsewhere */
+	double *halton;  /* [k * (max + 1) + n]: Halton point n's coordinate in dimension k
+	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once: the
+	                  * per-sample integer divisions stalled the pipeline */
 	double *col_cdf; /* bokeh: cumulative weight of the columns (BOKEH_N + 1), NULL without */
 	double *row_cdf; /* bokeh: per column, cumulative weight of its rows (BOKEH_N x (BOKEH_N + 1)) */
 };
@@ -96,6 +103,18 @@ static double chi2_upper_quantile(int k, double q)
 			hi = mid;
 	}
 	return 0.5 * (lo + hi);
+}
+
+/* The radical inverse of i in base b (the Halton sequence). */
+static double radical_inverse(uint32_t i, uint32_t b)
+{
+	double inv = 1.0 / b, f = inv, r = 0;
+	while (i > 0) {
+		r += f * (double)(i % b);
+		i /= b;
+		f *= inv;
+	}
+	return r;
 }
 
 /* The size of POV-Ray's first sample pattern for a maximum of max. */
@@ -178,6 +197,12 @@ struct lens *lens_new(const struct scene *s)
 		l->limit[n] = n > 0 && n < l->max && check_point(n, l->max)
 		                      ? c->variance * n * chi2_upper_quantile(n, c->confidence) / scale
 		                      : -1;
+	l->halton = malloc(4 * (size_t)(l->max + 1) * sizeof *l->halton);
+	if (!l->halton)
+		abort();
+	for (int k = 0; k < 4; k++)
+		for (int n = 0; n <= l->max; n++)
+			l->halton[k * (l->max + 1) + n] = radical_inverse((uint32_t)n, HALTON_BASES[k]);
 	if (c->bokeh)
 		bokeh_tables(l, c->bokeh, s);
 	return l;
@@ -188,6 +213,7 @@ void lens_free(struct lens *l)
 	if (!l)
 		return;
 	free(l->limit);
+	free(l->halton);
 	free(l->col_cdf);
 	free(l->row_cdf);
 	free(l);
@@ -235,22 +261,10 @@ static void lens_point(const struct lens *l, double a, double b, double *lu, dou
 	*lv = 0.5 - (j + fy) / n;
 }
 
-/* The radical inverse of i in base b (the Halton sequence). */
-static double radical_inverse(uint32_t i, uint32_t b)
+/* Coordinate k of Halton point n shifted by `shift` (in [0, 1)). */
+static double lens_dim(const struct lens *l, int k, int n, double shift)
 {
-	double inv = 1.0 / b, f = inv, r = 0;
-	while (i > 0) {
-		r += f * (double)(i % b);
-		i /= b;
-		f *= inv;
-	}
-	return r;
-}
-
-/* Component k of the shifted Halton point i (in [0, 1)). */
-static double lens_dim(uint32_t i, uint32_t base, double shift)
-{
-	double v = radical_inverse(i, base) + shift;
+	double v = l->halton[k * (l->max + 1) + n] + shift;
 	return v >= 1 ? v - 1 : v;
 }
 
@@ -298,16 +312,15 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
                       uint32_t sample, bool *any)
 {
 	double shift[4];
-	static const uint32_t bases[4] = {2, 3, 5, 7};
 	for (int k = 0; k < 4; k++)
 		shift[k] = hash_uniform((uint32_t)px, (uint32_t)py, sample, PURPOSE_LENS + (uint32_t)k);
 	/* Welford's running mean and sum of squared deviations per channel. */
 	double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
 	for (int n = 1; n <= l->max; n++) {
-		uint32_t s = (uint32_t)n; /* Halton point 0 is the corner */
+		/* Halton point 0 is the corner: the samples start at 1. */
 		double lu, lv;
-		lens_point(l, lens_dim(s, bases[0], shift[0]), lens_dim(s, bases[1], shift[1]), &lu, &lv);
-		double jx = lens_dim(s, bases[2], shift[2]) - 0.5, jy = lens_dim(s, bases[3], shift[3]) - 0.5;
+		lens_point(l, lens_dim(l, 0, n, shift[0]), lens_dim(l, 1, n, shift[1]), &lu, &lv);
+		double jx = lens_dim(l, 2, n, shift[2]) - 0.5, jy = lens_dim(l, 3, n, shift[3]) - 0.5;
 		struct ray r;
 		rgb c = rgb_make(0, 0, 0);
 		bool hit = false;

@@ -72,25 +72,44 @@ struct job {
 	atomic_bool stopped;
 };
 
+/* The last value set_compare raised to aa_exponent per channel, and the
+ * result: flat areas (a background, a plain colour, a checker's two
+ * colours) give the same channel values again and again, and pow is the
+ * dearest step of a method 2 sample on such a scene. */
+struct pow_memo {
+	double in[3], out[3];
+};
+
 struct worker {
 	struct job *job;
 	struct tracer tr;
 	pthread_t thread;
 	struct smp *cells;  /* method 1: the tile and its left column and upper row */
 	struct m2cache m2;
+	struct pow_memo memo;
 };
 
-static void set_compare(const struct render_opts *o, struct smp *s)
+static void set_compare(const struct render_opts *o, struct pow_memo *m, struct smp *s)
 {
 	double e = o->aa_exponent, ch[3] = {s->c.r, s->c.g, s->c.b};
-	for (int k = 0; k < 3; k++)
-		s->g[k] = e == 1 ? ch[k] : pow(fmax(ch[k], 0), e);
+	for (int k = 0; k < 3; k++) {
+		if (e == 1) {
+			s->g[k] = ch[k];
+		} else if (ch[k] == m->in[k]) {
+			s->g[k] = m->out[k];
+		} else {
+			m->in[k] = ch[k];
+			s->g[k] = m->out[k] = pow(fmax(ch[k], 0), e);
+		}
+	}
 	s->g[3] = o->alpha ? 1 - s->alpha : 0;
 }
 
 /* The sample at image position (x, y), for sample `sample` of pixel
- * (px, py) (the hash inputs of what the camera chooses at random). */
-static struct smp take(struct worker *w, double x, double y, int px, int py, uint32_t sample)
+ * (px, py) (the hash inputs of what the camera chooses at random), with
+ * its comparison values if `compare` (method 1's supersamples are only
+ * averaged, never compared). */
+static struct smp take(struct worker *w, double x, double y, int px, int py, uint32_t sample, bool compare)
 {
 	const struct render_opts *o = w->job->o;
 	bool any;
@@ -100,8 +119,8 @@ static struct smp take(struct worker *w, double x, double y, int px, int py, uin
 	/* The mean transmit of the camera's rays; where the camera has no ray
 	 * (outside a fisheye's circle) the pixel is transparent, as in POV-Ray. */
 	s.alpha = w->tr.camera_rays ? 1 - w->tr.camera_transmit / w->tr.camera_rays : 0;
-	if (o->aa_method)
-		set_compare(o, &s);
+	if (compare)
+		set_compare(o, &w->memo, &s);
 	w->tr.stats.samples++;
 	return s;
 }
@@ -148,14 +167,14 @@ static void supersample(struct worker *w, struct smp *s, int x, int y)
 			uint32_t k = (uint32_t)(1 + j * n + i);
 			double sx = x + (i + 0.5) * cell + jitter(o, (uint32_t)x, (uint32_t)y, k, JITTER_X, cell);
 			double sy = y + (j + 0.5) * cell + jitter(o, (uint32_t)x, (uint32_t)y, k, JITTER_Y, cell);
-			struct smp t = take(w, sx, sy, x, y, k);
+			struct smp t = take(w, sx, sy, x, y, k, false);
 			sum = rgb_add(sum, t.c);
 			alpha += t.alpha;
 		}
 	double inv = 1.0 / (n * n + 1);
 	s->c = rgb_scale(sum, inv);
 	s->alpha = alpha * inv;
-	set_compare(o, s);
+	set_compare(o, &w->memo, s);
 	s->super = true;
 	w->tr.stats.aa_pixels++;
 }
@@ -169,7 +188,7 @@ static void tile_method1(struct worker *w, int x0, int y0, int x1, int y1)
 	struct smp *cells = w->cells;
 	for (int y = ey0; y < y1; y++)
 		for (int x = ex0; x < x1; x++) {
-			cells[(y - ey0) * stride + (x - ex0)] = take(w, x + 0.5, y + 0.5, x, y, 0);
+			cells[(y - ey0) * stride + (x - ex0)] = take(w, x + 0.5, y + 0.5, x, y, 0, true);
 			cells[(y - ey0) * stride + (x - ex0)].super = false;
 		}
 	for (int y = y0; y < y1; y++)
@@ -205,7 +224,14 @@ static void tile_method1(struct worker *w, int x0, int y0, int x1, int y1)
 
 /* Method 2: the sample at fine-grid point (i, j) of pixel (px, py) (0 to n
  * along each side), from the caches. Its position and jitter depend only
- * on the point, so neighbouring pixels that share it see the same one. */
+ * on the point, so neighbouring pixels that share it see the same one.
+ * Jitter keeps every sample inside its pixel, as POV-Ray 3.7's does
+ * (measured on gradients whose colour is the image position, 128x128,
+ * +A0.0: with +R1 the pixels are exact, so the corners never move; the
+ * spread of the pixels at +R2, +R3 and +R4 is that of offsets of up to a
+ * quarter of the fine cell, times the amount, along the pixel's edge for a
+ * sample on it and in x and y inside): a jittered corner made corners
+ * differ more than POV-Ray's and so subdivided more pixels. */
 static const struct smp *m2_sample(struct worker *w, int x0, int y0, int px, int py, int i, int j)
 {
 	const struct render_opts *o = w->job->o;
@@ -227,9 +253,9 @@ static const struct smp *m2_sample(struct worker *w, int x0, int y0, int px, int
 	}
 	uint32_t gx = (uint32_t)px * (uint32_t)n + (uint32_t)i, gy = (uint32_t)py * (uint32_t)n + (uint32_t)j;
 	double cell = 1.0 / n;
-	double sx = gx * cell + jitter(o, gx, gy, 0, JITTER_X, cell);
-	double sy = gy * cell + jitter(o, gx, gy, 0, JITTER_Y, cell);
-	*s = take(w, sx, sy, (int)gx, (int)gy, 0);
+	double sx = gx * cell + (i % n ? jitter(o, gx, gy, 0, JITTER_X, cell / 2) : 0);
+	double sy = gy * cell + (j % n ? jitter(o, gx, gy, 0, JITTER_Y, cell / 2) : 0);
+	*s = take(w, sx, sy, (int)gx, (int)gy, 0, true);
 	return s;
 }
 
@@ -303,7 +329,7 @@ static void render_tile(struct worker *w, int tile)
 	}
 	for (int y = y0; y < y1; y++)
 		for (int x = x0; x < x1; x++) {
-			struct smp s = take(w, x + 0.5, y + 0.5, x, y, 0);
+			struct smp s = take(w, x + 0.5, y + 0.5, x, y, 0, false);
 			put(j, x, y, &s);
 		}
 }
@@ -404,6 +430,8 @@ bool render_image(const struct prepared *p, const struct render_opts *o, struct 
 		w[i].job = &j;
 		tracer_init(&w[i].tr, p);
 		worker_scratch(&w[i], o);
+		for (int k = 0; k < 3; k++)
+			w[i].memo.in[k] = NAN; /* equal to no colour */
 	}
 	/* Thread 0's work runs in workers started like the others; the calling
 	 * thread draws progress. */
