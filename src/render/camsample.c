@@ -285,7 +285,7 @@ static double lens_dim(const struct lens *l, int k, int n, double shift)
  *    amount times their numerical slope, and average and normal_map blend
  *    the entries' directions (POV-Ray 3.7 crashes on a normal_map in the
  *    camera; average matches it).
- * Known differences: facets, which looks at the surface it is on, and
+ * facets too (tests/render cam-normal-facets: exact). Known difference:
  * spiral1 with turbulence, whose values differ on surfaces too. */
 static vec3 camera_perturb(const struct normal *nm, const struct scene *s, double u, double v, vec3 d)
 {
