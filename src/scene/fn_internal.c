@@ -15,7 +15,7 @@
  * it, and they were chosen by measuring (zero and -0 coordinates and
  * parameters, terms that cancel exactly; tests/lang/stdlib-functions-exact).
  * What is left: where a value is a small difference of large terms, some
- * functions (f_torus2, f_hex_y, f_quantum, f_spikes) agree to the rounding
+ * functions (f_hex_y, f_quantum, f_spikes) agree to the rounding
  * of the terms only, and with -0 coordinates f_comma, f_helical_torus,
  * f_helix1 and f_spiral can differ from POV-Ray (their angle branches).
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
@@ -464,11 +464,16 @@ static double f_strophoid_2d(const double *a)
 	return field(a[3], -(y * y * (a[5] - x) - f * f * x * x * x - f * f * a[4] * x * x));
 }
 
+/* (x2 + y2 + z2 + R2 - r2)^2 - 4 R2 (x2 + z2), expanded and grouped as
+ * POV-Ray evaluates it (bit for bit where the terms nearly cancel). */
 static double f_torus2(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double R2 = a[4] * a[4], r2 = a[5] * a[5];
-	return field(a[3], -(sq(x2 + y2 + z2 + R2 - r2) - 4 * R2 * (x2 + z2)));
+	double g = x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2
+		+ 2 * y2 * z2 - 2 * x2 * (R2 + r2) + 2 * y2 * (R2 - r2)
+		- 2 * z2 * (R2 + r2) + sq(R2 - r2);
+	return field(a[3], -g);
 }
 
 static double f_torus_gumdrop(const double *a)

@@ -60,3 +60,6 @@ B("hyperbolic_torus", f_hyperbolic_torus(-0.6646, -3.7201, 2.8982, -2.6293, 0, 2
 B("hyperbolic_torus", f_hyperbolic_torus(-1.3866, -3.8146, 0, 32.977, -6.199e-06, 4))
 B("hyperbolic_torus", f_hyperbolic_torus(1.7694, 3.8586, 3.7933, -1, -1.395e-06, -2))
 B("hyperbolic_torus", f_hyperbolic_torus(-2.5372, 0, 1.4157, 0.7091, 1.5209, -3.621))
+B("torus2", f_torus2(-3.6692, 1.7536, -2.8833, 1.3912, 1.3392, -3.7619))
+B("torus2", f_torus2(1.5621, 0.0946, -3.0891, -2.0, -3.5828, 0.313))
+B("torus2", f_torus2(1.4623, 1.6288, -2.0425, -1.0, 0.000138061, 3))
