@@ -16,8 +16,9 @@
  * parameters, terms that cancel exactly; tests/lang/stdlib-functions-exact).
  * What is left: where a value is a small difference of large terms, some
  * functions (f_hex_y, f_quantum, f_spikes) agree to the rounding
- * of the terms only, and with -0 coordinates f_comma, f_helical_torus,
- * f_helix1 and f_spiral can differ from POV-Ray (their angle branches).
+ * of the terms only; with -0 coordinates f_comma, f_helical_torus,
+ * f_helix1 and f_spiral can differ from POV-Ray (their angle branches),
+ * and a zero of f_spiral can have the other sign.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
  * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
