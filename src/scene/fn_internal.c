@@ -10,11 +10,15 @@
  * deterministic functions reproduce POV-Ray's values to rounding for any
  * parameters, negative, zero and fractional ones included, NaN and
  * infinite results too (tests/unit/fn_internal_sweep.sh compares them on
- * random cases; the unit test holds recorded values). What is left: where
- * a value is a small difference of large terms it agrees to the rounding
- * of the terms only, and an exact zero of some field-strength functions
- * (f_umbrella, f_witch_of_agnesi, f_strophoid, ...) can have the other
- * sign than POV-Ray's.
+ * random cases; the unit test holds recorded values). An exact zero has
+ * POV-Ray's sign: the order of the terms and where a negation sits decide
+ * it, and they were chosen by measuring (zero and -0 coordinates and
+ * parameters, terms that cancel exactly; tests/lang/stdlib-functions-exact).
+ * What is left: where a value is a small difference of large terms, some
+ * functions (f_hex_y, f_quantum, f_spikes) agree to the rounding
+ * of the terms only; with -0 coordinates f_comma, f_helical_torus,
+ * f_helix1 and f_spiral can differ from POV-Ray (their angle branches),
+ * and a zero of f_spiral can have the other sign.
  * f_noise3d and f_noise_generator are POV-Ray's noise (the patterns'
  * noise3), and so are f_hetero_mf and f_ridge (tests/lang/
  * stdlib-functions-noise) and f_ridged_mf (within what POV-Ray keeps from
@@ -22,7 +26,10 @@
  *
  * Conventions that many functions share:
  *   - "field strength" functions return P0 times a polynomial, clamped to
- *     [-10, 10] (field());
+ *     [-10, 10] (field()). Most are POV-Ray's -P0 * g, g the polynomial
+ *     of the opposite sign (field(P0, -(g)) here): g's form is POV-Ray's
+ *     where the sign of a zero or the rounding showed it (expanded or
+ *     factored, the order of the terms);
  *   - the "_2d" functions describe a curve in the xy plane; with their SOR
  *     switch above zero the curve is swept around the y axis instead of
  *     being extruded along z (sor());
@@ -76,17 +83,21 @@ static double field(double p0, double v)
 
 /* The SOR transformation of the "_2d" functions: with the switch above
  * zero, (x, y) becomes the distance from the y axis less the offset and y,
- * rotated by angle degrees about z. Otherwise x and y are left as they are
- * (the curve is extruded along z). */
+ * rotated by angle degrees about z (not rotated at all for a zero angle,
+ * which keeps the sign of a zero y as POV-Ray does). Otherwise x and y are
+ * left as they are (the curve is extruded along z). */
 static void sor(const double *a, double sw, double offset, double angle,
 		double *px, double *py)
 {
 	double x = a[0], y = a[1];
 	if (sw > 0) {
-		double t = angle * (M_PI / 180);
 		double u = sqrt(a[0] * a[0] + a[2] * a[2]) - offset;
-		x = u * cos(t) - y * sin(t);
-		y = u * sin(t) + y * cos(t);
+		x = u;
+		if (angle != 0) {
+			double t = angle * (M_PI / 180);
+			x = u * cos(t) - y * sin(t);
+			y = u * sin(t) + y * cos(t);
+		}
 	}
 	*px = x;
 	*py = y;
@@ -148,7 +159,7 @@ static double f_algbr_cyl2(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -y2 + 3 * x2 * y + 2 * y2 * y - 2 * x2 * x2 - y2 * y2, 0);
+	return algbr_cyl(a, -(y2 - 3 * x2 * y - 2 * y2 * y + 2 * x2 * x2 + y2 * y2), 0);
 }
 
 static double f_algbr_cyl3(const double *a)
@@ -156,7 +167,7 @@ static double f_algbr_cyl3(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -y2 + 2 * x2 * y + x * y2 - x2 * x2 - x2 * y2, 0);
+	return algbr_cyl(a, -(y2 - 2 * x2 * y - x * y2 + x2 * x2 + x2 * y2), 0);
 }
 
 static double f_algbr_cyl4(const double *a)
@@ -164,7 +175,7 @@ static double f_algbr_cyl4(const double *a)
 	double x, y;
 	sor(a, a[5], a[6], a[7], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return algbr_cyl(a, -3 * x2 * y + y2 * y - sq(x2 + y2), 0);
+	return algbr_cyl(a, -(3 * x2 * y - y2 * y + sq(x2 + y2)), 0);
 }
 
 /* ---- field strength surfaces: P0 field strength, then shape
@@ -181,7 +192,7 @@ static double f_bifolia(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
 	double r2 = x * x + z * z;
-	return field(a[3], a[4] * y * r2 - sq(r2 + y * y));
+	return field(a[3], -(sq(r2 + y * y) - a[4] * y * r2));
 }
 
 /* Apery's sextic for Boy's surface, scaled by P1. */
@@ -207,7 +218,7 @@ static double f_crossed_trough(const double *a)
 static double f_cubic_saddle(const double *a)
 {
 	double x = a[0], y = a[1];
-	return field(a[3], a[2] - x * x * x + y * y * y);
+	return field(a[3], -(x * x * x - y * y * y - a[2]));
 }
 
 /* f_cushion and f_odd are the same function in POV-Ray 3.7. */
@@ -222,7 +233,7 @@ static double f_cushion(const double *a)
 static double f_devils_curve(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
-	return field(a[3], y2 * y2 - sq(x2 + z2) + 0.36 * x2 - 0.25 * y2);
+	return field(a[3], -(sq(x2 + z2) - y2 * y2 - 0.36 * x2 + 0.25 * y2));
 }
 
 static double f_devils_curve_2d(const double *a)
@@ -230,7 +241,7 @@ static double f_devils_curve_2d(const double *a)
 	double x, y;
 	sor(a, a[6], a[7], a[8], &x, &y);
 	double x2 = x * x, y2 = y * y;
-	return field(a[3], x2 * (a[4] * a[4] - x2) + y2 * (y2 - a[5] * a[5]));
+	return field(a[3], -(x2 * (x2 - a[4] * a[4]) - y2 * (y2 - a[5] * a[5])));
 }
 
 /* A torus of radii P1, P2 displaced by (P3, P4, 0) and inverted in a
@@ -255,8 +266,8 @@ static double f_enneper(const double *a)
 	double x = a[0], y = a[1], z = a[2];
 	double u = x * x - y * y;
 	double zd = fabs(z) < 0.2 ? 0.2 : z;
-	double c = u / (2 * zd) - z * z * (2.0 / 9);
-	return field(a[3], c * c * c + 6 * sq(u / (4 * zd)));
+	double c = z * z * (2.0 / 9) - u / (2 * zd);
+	return field(a[3], -(c * c * c - 6 * sq(u / (4 * zd))));
 }
 
 static double f_folium_surface(const double *a)
@@ -284,7 +295,7 @@ static double f_heart(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z = a[2], z2 = z * z;
 	double b = 2 * x2 + y2 + z2 - 1;
-	return field(a[3], -b * b * b + (0.1 * x2 + y2) * z2 * z);
+	return field(a[3], -(b * b * b - (0.1 * x2 + y2) * z2 * z));
 }
 
 static double f_hunt_surface(const double *a)
@@ -294,17 +305,23 @@ static double f_hunt_surface(const double *a)
 	return field(a[3], -(4 * b * b * b + 27 * sq(3 * x2 + y2 - 4 * z2 - 12)));
 }
 
+/* (x2 + y2 - z2 + R2 - r2)^2 - 4 R2 (x2 - z2), expanded and grouped as
+ * POV-Ray evaluates it: its values agree bit for bit where the terms
+ * nearly cancel. */
 static double f_hyperbolic_torus(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double R2 = a[4] * a[4], r2 = a[5] * a[5];
-	return field(a[3], 4 * R2 * (x2 - z2) - sq(x2 + y2 - z2 + R2 - r2));
+	double g = x2 * x2 + 2 * x2 * y2 - 2 * x2 * z2 - 2 * x2 * (R2 + r2)
+		+ y2 * y2 - 2 * y2 * z2 + 2 * y2 * (R2 - r2)
+		+ z2 * z2 + 2 * z2 * (R2 + r2) + sq(R2 - r2);
+	return field(a[3], -g);
 }
 
 static double f_kampyle_of_eudoxus(const double *a)
 {
 	double x2 = a[0] * a[0], d = a[4], c = a[5];
-	return field(a[3], c * c * x2 * (x2 - d * d) - a[1] * a[1] - a[2] * a[2]);
+	return field(a[3], -(a[1] * a[1] + a[2] * a[2] - c * c * x2 * (x2 - d * d)));
 }
 
 static double f_kampyle_of_eudoxus_2d(const double *a)
@@ -312,7 +329,7 @@ static double f_kampyle_of_eudoxus_2d(const double *a)
 	double x, y;
 	sor(a, a[6], a[7], a[8], &x, &y);
 	double x2 = x * x, d = a[4], c = a[5];
-	return field(a[3], c * c * x2 * x2 - d * c * c * c * x2 - y * y);
+	return field(a[3], -(y * y - c * c * x2 * x2 + d * c * c * c * x2));
 }
 
 /* The Klein bottle's sextic, negated. */
@@ -327,24 +344,24 @@ static double f_klein_bottle(const double *a)
 static double f_kummer_surface_v1(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
-	double v = x2 + y2 + z2 - 1 - (x2 * x2 + y2 * y2 + z2 * z2)
-		+ x2 * y2 + x2 * z2 + y2 * z2;
-	return field(a[3], v);
+	double g = x2 * x2 + y2 * y2 + z2 * z2 - x2 * y2 - x2 * z2 - y2 * z2
+		- x2 - y2 - z2 + 1;
+	return field(a[3], -g);
 }
 
 static double f_kummer_surface_v2(const double *a)
 {
 	double x = a[0], y = a[1], z = a[2];
 	double x2 = x * x, y2 = y * y, z2 = z * z;
-	double v = 1 - a[4] * (x2 + y2 + z2) - (x2 * x2 + y2 * y2 + z2 * z2)
-		- a[6] * x * y * z - a[5] * (x2 * y2 + x2 * z2 + y2 * z2);
-	return field(a[3], v);
+	double g = a[4] * (x2 + y2 + z2) + (x2 * x2 + y2 * y2 + z2 * z2)
+		+ a[6] * x * y * z + a[5] * (x2 * y2 + x2 * z2 + y2 * z2) - 1;
+	return field(a[3], -g);
 }
 
 static double f_lemniscate_of_gerono(const double *a)
 {
 	double x2 = a[0] * a[0];
-	return field(a[3], x2 - x2 * x2 - a[1] * a[1] - a[2] * a[2]);
+	return field(a[3], -(x2 * x2 - x2 + a[1] * a[1] + a[2] * a[2]));
 }
 
 static double f_lemniscate_of_gerono_2d(const double *a)
@@ -352,31 +369,31 @@ static double f_lemniscate_of_gerono_2d(const double *a)
 	double x, y;
 	sor(a, a[6], a[7], a[8], &x, &y);
 	double x2 = x * x, s = a[4], w = a[5];
-	return field(a[3], w * w * x2 * (s * s - x2) - y * y);
+	return field(a[3], -(y * y - w * w * x2 * (s * s - x2)));
 }
 
 static double f_mitre(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
-	return field(a[3], y2 - 4 * x2 * (x2 + y2 + z2) - y2 * (y2 + z2));
+	return field(a[3], -(4 * x2 * (x2 + y2 + z2) + y2 * (y2 + z2) - y2));
 }
 
 static double f_nodal_cubic(const double *a)
 {
 	double y = a[1], z = a[2];
-	return field(a[3], 6 * y * z - y * y * y - z * z * z);
+	return field(a[3], -(y * y * y + z * z * z - 6 * y * z));
 }
 
 static double f_ovals_of_cassini(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double R2 = a[4] * a[4], fill = a[5], thick = a[6];
-	return field(a[3], fill * fill - sq(x2 + y2 + z2 + R2) + thick * R2 * (x2 + z2));
+	return field(a[3], -(sq(x2 + y2 + z2 + R2) - fill * fill - thick * R2 * (x2 + z2)));
 }
 
 static double f_paraboloid(const double *a)
 {
-	return field(a[3], a[1] - a[0] * a[0] - a[2] * a[2]);
+	return field(a[3], -(a[0] * a[0] + a[2] * a[2] - a[1]));
 }
 
 static double f_parabolic_torus(const double *a)
@@ -384,7 +401,7 @@ static double f_parabolic_torus(const double *a)
 	double x2 = a[0] * a[0], y2 = a[1] * a[1];
 	double R2 = a[4] * a[4], r2 = a[5] * a[5];
 	double w = x2 + y2 - a[2];
-	return field(a[3], -w * w + (R2 + r2) * w - 2 * R2 * y2 - sq(R2 - r2));
+	return field(a[3], -(w * w - (R2 + r2) * w + 2 * R2 * y2 + sq(R2 - r2)));
 }
 
 static double f_pillow(const double *a)
@@ -404,26 +421,26 @@ static double f_piriform_2d(const double *a)
 	double x, y;
 	sor(a, a[7], a[8], a[9], &x, &y);
 	double x3 = x * x * x, f = a[6];
-	return field(a[3], f * f * (a[4] * x3 + a[5] * x3 * x) - y * y);
+	return field(a[3], -(y * y - f * f * (a[4] * x3 + a[5] * x3 * x)));
 }
 
 static double f_quartic_paraboloid(const double *a)
 {
 	double x2 = a[0] * a[0], z2 = a[2] * a[2];
-	return field(a[3], a[1] - x2 * x2 - z2 * z2);
+	return field(a[3], -(x2 * x2 + z2 * z2 - a[1]));
 }
 
 static double f_quartic_saddle(const double *a)
 {
 	double x2 = a[0] * a[0], z2 = a[2] * a[2];
-	return field(a[3], a[1] - x2 * x2 + z2 * z2);
+	return field(a[3], -(x2 * x2 - z2 * z2 - a[1]));
 }
 
 static double f_quartic_cylinder(const double *a)
 {
 	double d = a[4], w = a[5];
 	double r2 = a[0] * a[0] + a[2] * a[2];
-	return field(a[3], d * d * w * w - r2 * (a[1] * a[1] + w * w));
+	return field(a[3], -(r2 * (a[1] * a[1] + w * w) - d * d * w * w));
 }
 
 static double f_steiners_roman(const double *a)
@@ -435,9 +452,9 @@ static double f_steiners_roman(const double *a)
 
 static double f_strophoid(const double *a)
 {
-	double x = a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
+	double x = a[0], yz = a[1] * a[1] + a[2] * a[2];
 	double f = a[6];
-	return field(a[3], (y2 + z2) * (x - a[5]) + f * f * x * x * (x + a[4]));
+	return field(a[3], -((a[5] - x) * yz - f * f * x * x * x - f * f * a[4] * x * x));
 }
 
 static double f_strophoid_2d(const double *a)
@@ -445,14 +462,19 @@ static double f_strophoid_2d(const double *a)
 	double x, y;
 	sor(a, a[7], a[8], a[9], &x, &y);
 	double f = a[6];
-	return field(a[3], y * y * (x - a[5]) + f * f * x * x * (x + a[4]));
+	return field(a[3], -(y * y * (a[5] - x) - f * f * x * x * x - f * f * a[4] * x * x));
 }
 
+/* (x2 + y2 + z2 + R2 - r2)^2 - 4 R2 (x2 + z2), expanded and grouped as
+ * POV-Ray evaluates it (bit for bit where the terms nearly cancel). */
 static double f_torus2(const double *a)
 {
 	double x2 = a[0] * a[0], y2 = a[1] * a[1], z2 = a[2] * a[2];
 	double R2 = a[4] * a[4], r2 = a[5] * a[5];
-	return field(a[3], 4 * R2 * (x2 + z2) - sq(x2 + y2 + z2 + R2 - r2));
+	double g = x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2
+		+ 2 * y2 * z2 - 2 * x2 * (R2 + r2) + 2 * y2 * (R2 - r2)
+		- 2 * z2 * (R2 + r2) + sq(R2 - r2);
+	return field(a[3], -g);
 }
 
 static double f_torus_gumdrop(const double *a)
@@ -465,20 +487,20 @@ static double f_torus_gumdrop(const double *a)
 
 static double f_umbrella(const double *a)
 {
-	return field(a[3], a[1] * a[2] * a[2] - a[0] * a[0]);
+	return field(a[3], -(a[0] * a[0] - a[1] * a[2] * a[2]));
 }
 
 static double f_witch_of_agnesi(const double *a)
 {
 	double y = a[1], w = a[4];
-	return field(a[3], w * (1 - y) - y * (a[0] * a[0] + a[2] * a[2]));
+	return field(a[3], -(y * (a[0] * a[0] + a[2] * a[2]) - w * (1 - y)));
 }
 
 static double f_witch_of_agnesi_2d(const double *a)
 {
 	double x, y;
 	sor(a, a[6], a[7], a[8], &x, &y);
-	return field(a[3], a[5] - y * (x * x + a[4] * a[4]));
+	return field(a[3], -(y * (x * x + a[4] * a[4]) - a[5]));
 }
 
 /* ---- blobs and ellipsoid families ---- */
@@ -567,7 +589,7 @@ static double f_spikes(const double *a)
 static double f_spikes_2d(const double *a)
 {
 	double x = a[0], z = a[2];
-	return a[1] - a[3] * cos(a[4] * x) * cos(a[5] * z) * exp(-a[6] * (x * x + z * z));
+	return -(a[3] * cos(a[4] * x) * cos(a[5] * z) * exp(-a[6] * (x * x + z * z)) - a[1]);
 }
 
 /* A d orbital's density cloud; P0 is not used. On the y axis x counts as

@@ -19,7 +19,7 @@
 #
 # Each case is evaluated by POV-Ray and lucent running the same scene
 # (one scene per function; POV-Ray's start-up is slow), which prints
-# mantissa and exponent to 17 digits, and the sign of a zero and of a NaN.
+# mantissa and exponent exactly, and the sign of a zero and of a NaN.
 # A case differs when the two are more than TOL (default 1e-12) apart
 # relative to the larger, or are not both NaN or the same infinity, or
 # are zeros or NaNs of different signs. For each function the report
@@ -67,15 +67,17 @@ def rcoord(rng):
     if r < 0.10: return rng.randint(-4, 4) / 2
     return round(rng.uniform(-4, 4), 4)
 
-# P prints mantissa, exponent, sign, 1/v for a zero (its sign) and v * 0
-# (a NaN's sign), computed by functions so that NaN and inf pass through.
+# P prints a binary mantissa (to 20 decimals, which decode exactly) and
+# exponent, the sign, 1/v for a zero (its sign) and v * 0 (a NaN's sign),
+# computed by functions so that NaN and inf pass through. Scaling by a
+# power of 2 is exact, so bit-identical values compare equal.
 HEAD = r'''#version 3.7;
-#declare FE = function(v) { floor(log(abs(v))) }
-#declare FM = function(v) { v * pow(10, -floor(log(abs(v)))) }
+#declare FE = function(v) { floor(ln(abs(v)) / ln(2)) }
+#declare FM = function(v) { v * pow(2, -floor(ln(abs(v)) / ln(2))) }
 #declare FS = function(v) { select(v, -1, 0, 1) }
 #declare FZ = function(v) { select(v, 0, 1/v, 0) }
 #declare FN = function(v) { v * 0 }
-#macro P(V) #debug concat(str(FM(V),0,16), " ", str(FE(V),0,0), " ",
+#macro P(V) #debug concat(str(FM(V),0,20), " ", str(FE(V),0,0), " ",
   str(FS(V),0,0), " ", str(FZ(V),0,0), " ", str(FN(V),0,0), "\n") #end
 '''
 
@@ -88,7 +90,7 @@ def decode(line):
     if 'nan' in e: return ('nan', ns)
     if e == 'inf': return float(s) * math.inf
     if e == '-inf': return 0.0
-    return float(m) * 10.0 ** int(e)
+    return math.ldexp(float(m), int(e))
 
 def run(cmd, work, name):
     subprocess.run([cmd, '-D', '-F', '+W8', '+H8', '+GD' + name + '.dbg', '+I' + name + '.pov'],
