@@ -660,6 +660,7 @@ int parse_scene(struct srcmgr *sm, struct diag *d, const struct parse_opts *o, s
 	sym_free(p->spare_locals);
 	free(p->rng);
 	exprcache_free(p->xcache);
+	parse_fonts_free(p);
 	texture_unref(p->default_tex);
 	d->context = NULL;
 	d->context_arg = NULL;

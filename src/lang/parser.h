@@ -102,6 +102,7 @@ struct parser {
 	int nowned;
 	struct texture *default_tex; /* #default { texture }: one reference */
 	struct exprcache *xcache;    /* compiled float expressions (exprcache.h) */
+	struct font_cache *fonts;    /* the fonts text statements loaded (text_parse.c) */
 	unsigned long steps;         /* directives run and macros called (parse_step) */
 	unsigned long events;        /* directives run and frames entered or left */
 	unsigned long bindgen;       /* bumped when any binding is added or removed or a
@@ -483,6 +484,8 @@ bool parse_transform_item(struct parser *p, struct xform *out);
 /* text { ... } from the token after '{' up to its modifiers
  * (text_parse.c); at is the statement's position. The caller owns it. */
 struct object *parse_text(struct parser *p, struct srcpos at);
+/* Free the fonts the parse's text statements loaded (text_parse.c). */
+void parse_fonts_free(struct parser *p);
 /* `transform` { ... } | IDENT as a value; the caller owns the result. */
 struct xform *parse_transform_value(struct parser *p);
 
