@@ -27,6 +27,7 @@
 #include "font/ttf.h"
 #include "geom/collect.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,9 +49,9 @@ enum { PART_FRONT = -1, PART_BACK = -2 };
 struct text {
 	struct object base;
 	struct tseg *seg;
-	int nseg;
+	int nseg, capseg;
 	struct tglyph *glyph;
-	int nglyph;
+	int nglyph, capglyph;
 	double z0, z1;       /* z0 <= z1 */
 	double zfront;       /* 0: the cap whose normal is -z */
 	double lo[2], hi[2]; /* the extent of every glyph */
@@ -289,8 +290,10 @@ static struct object *text_copy(const struct object *o)
 	struct text *c = malloc(sizeof *c);
 	if (!c) abort();
 	*c = *T;
-	c->seg = malloc((size_t)(T->nseg ? T->nseg : 1) * sizeof *c->seg);
-	c->glyph = malloc((size_t)(T->nglyph ? T->nglyph : 1) * sizeof *c->glyph);
+	c->capseg = T->nseg ? T->nseg : 1;
+	c->capglyph = T->nglyph ? T->nglyph : 1;
+	c->seg = malloc((size_t)c->capseg * sizeof *c->seg);
+	c->glyph = malloc((size_t)c->capglyph * sizeof *c->glyph);
 	if (!c->seg || !c->glyph) abort();
 	if (T->nseg) /* a text of spaces or no characters has none (and no array) */
 		memcpy(c->seg, T->seg, (size_t)T->nseg * sizeof *c->seg);
@@ -325,9 +328,25 @@ static void add_glyph(struct text *T, const struct ttf_outline *ol, double s, do
 {
 	if (ol->n == 0)
 		return;
-	T->seg = realloc(T->seg, ((size_t)T->nseg + ol->n) * sizeof *T->seg);
-	T->glyph = realloc(T->glyph, ((size_t)T->nglyph + 1) * sizeof *T->glyph);
-	if (!T->seg || !T->glyph) abort();
+	/* The arrays double as they fill: a long string (shapes.inc's
+	 * Text_Width of every prefix of a string) otherwise copied them
+	 * again for each glyph. */
+	if ((size_t)T->nseg + ol->n > (size_t)T->capseg) {
+		size_t cap = T->capseg ? 2 * (size_t)T->capseg : 64;
+		while (cap < (size_t)T->nseg + ol->n)
+			cap *= 2;
+		if (cap > INT_MAX) abort();
+		T->seg = realloc(T->seg, cap * sizeof *T->seg);
+		if (!T->seg) abort();
+		T->capseg = (int)cap;
+	}
+	if (T->nglyph == T->capglyph) {
+		size_t cap = T->capglyph ? 2 * (size_t)T->capglyph : 8;
+		if (cap > INT_MAX) abort();
+		T->glyph = realloc(T->glyph, cap * sizeof *T->glyph);
+		if (!T->glyph) abort();
+		T->capglyph = (int)cap;
+	}
 	struct tglyph *g = &T->glyph[T->nglyph++];
 	g->first = T->nseg;
 	g->n = (int)ol->n;
