@@ -10,5 +10,5 @@
 // under the sanitizers and 0.1 s built normally; this one, 120 letters, 0.6 s.
 #version 3.7;
 #include "shapes.inc"
-#declare T = Circle_Text("timrom.ttf", "Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hel", 0.5, 0, 0.2, 3, 0, Align_Center, 90);
+#declare T = Circle_Text("timrom.ttf", "Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hello, world Hel", 0.5, 0, 0.2, 10, 0, Align_Center, 90);
 #declare B = Bevelled_Text("timrom.ttf", , z)
