@@ -117,14 +117,19 @@ least() {
 # 1x1 pixels (start-up, parsing, preparing, writing the file). A render
 # that takes over a second is timed by its IMG run; a shorter one by the
 # least of REPEATS runs writing no file, less the least of REPEATS such
-# runs at 1x1.
+# runs at 1x1; a command under a quarter of a second by three times as
+# many (its render, a few milliseconds, is within the noise of the
+# start-up: the least of 3 moved such renders by a factor of 2 between
+# runs).
 timed() {
 	whole=$(render_"$1" "$2" "$3" "$4" "${W}x$H") || return 1
 	if awk -v t="$whole" 'BEGIN { exit !(t > 1) }'; then
 		base=$(least 2 "$1" "$2" "$3" "$out/base.exr" 1x1) || return 1
 	else
-		whole=$(least "$REPEATS" "$1" "$2" "$3" - "${W}x$H") || return 1
-		base=$(least "$REPEATS" "$1" "$2" "$3" - 1x1) || return 1
+		k=$REPEATS
+		awk -v t="$whole" 'BEGIN { exit !(t < 0.25) }' && k=$((3 * REPEATS))
+		whole=$(least "$k" "$1" "$2" "$3" - "${W}x$H") || return 1
+		base=$(least "$k" "$1" "$2" "$3" - 1x1) || return 1
 	fi
 	awk -v a="$whole" -v b="$base" 'BEGIN { d = a - b; printf "%.3f\n", (d > 0.001 ? d : 0.001) }'
 }
@@ -201,31 +206,12 @@ fastest() {
 		END { if (best != "") printf "%s\t%s\n", lab, best }' "$data"
 }
 
-# equal_error SCENE: "median min max n" of POV-Ray's time over lucent's
-# to reach the same error, over every error level either renderer's best
-# settings reach (the time to reach E: the fastest setting whose RMS is at
-# most E), counting the levels both reach; then the number of levels only
-# lucent reaches and only POV-Ray reaches.
+# equal_error SCENE MODE: acc_compare (lib.sh) on the scene's settings.
 equal_error() {
 	awk -F'\t' -v s="$1" '
 		$1 == s && $2 != "reference" {
-			if ($4 != "-" && $5 != "-") { nl++; lt[nl] = $4; le[nl] = $5; lv[$5] = 1 }
-			if ($7 != "-" && $8 != "-") { np++; pt[np] = $7; pe[np] = $8; lv[$8] = 1 } }
-		function reach(n, t, e, E,   i, b) {
-			b = -1
-			for (i = 1; i <= n; i++) if (e[i] + 0 <= E + 0 && (b < 0 || t[i] + 0 < b)) b = t[i] + 0
-			return b }
-		END {
-			k = 0; ol = 0; op = 0
-			for (E in lv) {
-				a = reach(nl, lt, le, E); b = reach(np, pt, pe, E)
-				if (a >= 0 && b >= 0) { if (a < 0.001) a = 0.001; if (b < 0.001) b = 0.001; r[++k] = b / a }
-				else if (a >= 0) ol++
-				else if (b >= 0) op++ }
-			if (k == 0) { print "- - - 0", ol, op; exit }
-			for (i = 2; i <= k; i++) { v = r[i]; for (j = i - 1; j >= 1 && r[j] > v; j--) r[j + 1] = r[j]; r[j + 1] = v }
-			med = k % 2 ? r[(k + 1) / 2] : (r[k / 2] + r[k / 2 + 1]) / 2
-			printf "%.2f %.2f %.2f %d %d %d\n", med, r[1], r[k], k, ol, op }' "$data"
+			if ($4 != "-" && $5 != "-") print "l", $4, $5
+			if ($7 != "-" && $8 != "-") print "p", $7, $8 }' "$data" | acc_compare "$2"
 }
 
 # Plots.
@@ -309,19 +295,27 @@ fi
 	## Summary
 
 	**Same error, time compared.** For every error level that one of the
-	renderers' settings reaches, the time each renderer needs to get there (its
-	fastest setting with at most that RMS error); the ratio is POV-Ray's time
-	over lucent's, so above 1 means lucent's curve lies below POV-Ray's (less
-	time for the same error). "Only lucent" / "only POV-Ray" count the levels
-	that only one of them reaches with the settings measured.
+	renderers' settings reaches, the time each renderer needs to get there,
+	and the ratio of POV-Ray's time over lucent's: above 1 means lucent's
+	curve lies below POV-Ray's (less time for the same error). Two ways:
+	- *settings*: the fastest measured setting with at most that RMS error
+	  (a step: a level just below one renderer's setting counts that
+	  renderer's next, much slower setting, so one setting a few percent
+	  worse in error at equal switches gives a low ratio there);
+	- *curves*: on the curves of the plots, each renderer's fastest
+	  settings joined by straight lines on the log-log scale.
+	"Only lucent" / "only POV-Ray" count the levels that only one of them
+	reaches with the settings measured.
 
-	| scene | POV-Ray time / lucent time: median | lowest | highest | levels compared | only lucent | only POV-Ray | the two references differ by (RMS, max) |
-	|---|---|---|---|---|---|---|---|
+	| scene | settings: median | lowest | highest | curves: median | lowest | highest | levels compared | only lucent | only POV-Ray | the two references differ by (RMS, max) |
+	|---|---|---|---|---|---|---|---|---|---|---|
 	EOF
 	for s in $scenes; do
 		rd=$(awk -F'\t' -v s="$s" '$1 == s { split($2, a, " "); print a[1] ", " a[2] }' "$out/refdiff.tsv")
-		set -- $(equal_error "$s")
-		printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "$s" "$1" "$2" "$3" "$4" "$5" "$6" "${rd:--}"
+		line=$(equal_error "$s" line)
+		set -- $(equal_error "$s" step)
+		printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$s" "$1" "$2" "$3" \
+			$(echo "$line" | cut -d' ' -f1-3) "$4" "$5" "$6" "${rd:--}"
 	done
 	cat <<-EOF
 
