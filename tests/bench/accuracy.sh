@@ -269,7 +269,8 @@ fi
 	  parsing, preparing and writing the file (the same whatever the setting).
 	  CPU time rather than wall clock, so that other jobs on a shared machine
 	  disturb the figures less. Renders under a second are timed as the least
-	  of $REPEATS runs (and so is their 1x1 run).
+	  of $REPEATS runs (and so is their 1x1 run), commands under a quarter of
+	  a second as the least of $((3 * REPEATS)).
 	- **Error**: RMS and largest absolute difference over every pixel and
 	  channel, in linear float (OpenEXR output, \`+FE\`; POV-Ray writes half
 	  floats, about 3 significant digits), computed by OpenImageIO's idiff,
