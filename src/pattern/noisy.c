@@ -261,17 +261,20 @@ static void crackle_search(vec3 q, double metric, double offset, struct nearest 
 	double ci = floor(q.x), cj = floor(q.y), ck = floor(q.z);
 	nr->d[0] = nr->d[1] = nr->d[2] = INFINITY;
 	nr->point = q;
-	for (double i = ci - 1; i <= ci + 1; i++)
-		for (double j = cj - 1; j <= cj + 1; j++)
-			for (double k = ck - 1; k <= ck + 1; k++) {
-				vec3 c = cell_point(i, j, k);
+	/* Counted by whole offsets: past 2^53, ci + 1 is ci and a loop on
+	 * the coordinate itself never ended (found by fuzzing). */
+	for (int di = -1; di <= 1; di++)
+		for (int dj = -1; dj <= 1; dj++)
+			for (int dk = -1; dk <= 1; dk++) {
+				vec3 c = cell_point(ci + di, cj + dj, ck + dk);
 				nearest_add(nr, c, metric_dist(v3_sub(q, c), metric, offset));
 			}
-	for (double i = ci - 2; i <= ci + 2; i++)
-		for (double j = cj - 2; j <= cj + 2; j++)
-			for (double k = ck - 2; k <= ck + 2; k++) {
-				if (fabs(i - ci) < 2 && fabs(j - cj) < 2 && fabs(k - ck) < 2)
+	for (int di = -2; di <= 2; di++)
+		for (int dj = -2; dj <= 2; dj++)
+			for (int dk = -2; dk <= 2; dk++) {
+				if (abs(di) < 2 && abs(dj) < 2 && abs(dk) < 2)
 					continue;
+				double i = ci + di, j = cj + dj, k = ck + dk;
 				vec3 g = v3(gap(q.x, i), gap(q.y, j), gap(q.z, k));
 				if (metric_dist(g, metric, offset) >= nr->d[2])
 					continue;

@@ -233,9 +233,12 @@ static double hexagon_value(const struct pavement_layout *l, double x, double z,
 	/* the nearest centre (1 + 1.5 m, (m + 2 n) H) */
 	double mf = floor((x - 1) / 1.5);
 	double bm = 0, bn = 0, best2 = INFINITY;
-	for (double m = mf; m <= mf + 1; m++) {
+	/* whole offsets: past 2^53 mf + 1 is mf (a loop on m never ended) */
+	for (int a = 0; a <= 1; a++) {
+		double m = mf + a;
 		double nf = floor((z - H * m) / (2 * H));
-		for (double n = nf; n <= nf + 1; n++) {
+		for (int b = 0; b <= 1; b++) {
+			double n = nf + b;
 			double dx = x - (1 + 1.5 * m), dz = z - (m + 2 * n) * H;
 			double d2 = dx * dx + dz * dz;
 			if (d2 < best2) {

@@ -149,9 +149,10 @@ static void penrose_find(double x, double z, struct rhomb *t)
 			for (int s = r + 1; s < 5; s++) {
 				double br = floor(gx * pen_e[r][0] + gz * pen_e[r][1] + PENROSE_GAMMA);
 				double bs = floor(gx * pen_e[s][0] + gz * pen_e[s][1] + PENROSE_GAMMA);
-				for (double kr = br - reach; kr <= br + 1 + reach; kr++)
-					for (double ks = bs - reach; ks <= bs + 1 + reach; ks++)
-						if (penrose_crossing(r, s, kr, ks, x, z, t))
+				/* whole offsets: past 2^53 br + 1 is br */
+				for (int a = -reach; a <= 1 + reach; a++)
+					for (int b = -reach; b <= 1 + reach; b++)
+						if (penrose_crossing(r, s, br + a, bs + b, x, z, t))
 							return;
 			}
 	*t = (struct rhomb){0, 1, x, z, 0.5, 0.5};  /* not reached */
