@@ -45,13 +45,18 @@ enum { BOKEH_N = 128 };
 /* The Halton bases of the lens sample's four dimensions: lens u and v,
  * pixel x and y. */
 static const uint32_t HALTON_BASES[4] = {2, 3, 5, 7};
+enum { HALTON_TABLE = 65536 };
 
 struct lens {
 	int min, max;
 	double *limit;   /* [n], n = 0..max: the variance limit at a check point, -1 elsewhere */
-	double *halton;  /* [k * (max + 1) + n]: Halton point n's coordinate in dimension k
-	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once: the
-	                  * per-sample integer divisions stalled the pipeline */
+	double *halton;  /* [k * (ntab + 1) + n]: Halton point n's coordinate in dimension k
+	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once for
+	                  * n <= ntab: the per-sample integer divisions stalled the
+	                  * pipeline */
+	int ntab;        /* max, but at most HALTON_TABLE (a huge blur_samples is not
+	                  * worth 32 bytes a sample; past the table, the points are
+	                  * worked out as they are needed) */
 	double *col_cdf; /* bokeh: cumulative weight of the columns (BOKEH_N + 1), NULL without */
 	double *row_cdf; /* bokeh: per column, cumulative weight of its rows (BOKEH_N x (BOKEH_N + 1)) */
 };
@@ -197,12 +202,13 @@ struct lens *lens_new(const struct scene *s)
 		l->limit[n] = n > 0 && n < l->max && check_point(n, l->max)
 		                      ? c->variance * n * chi2_upper_quantile(n, c->confidence) / scale
 		                      : -1;
-	l->halton = malloc(4 * (size_t)(l->max + 1) * sizeof *l->halton);
+	l->ntab = l->max < HALTON_TABLE ? l->max : HALTON_TABLE;
+	l->halton = malloc(4 * (size_t)(l->ntab + 1) * sizeof *l->halton);
 	if (!l->halton)
 		abort();
 	for (int k = 0; k < 4; k++)
-		for (int n = 0; n <= l->max; n++)
-			l->halton[k * (l->max + 1) + n] = radical_inverse((uint32_t)n, HALTON_BASES[k]);
+		for (int n = 0; n <= l->ntab; n++)
+			l->halton[k * (l->ntab + 1) + n] = radical_inverse((uint32_t)n, HALTON_BASES[k]);
 	if (c->bokeh)
 		bokeh_tables(l, c->bokeh, s);
 	return l;
@@ -264,7 +270,8 @@ static void lens_point(const struct lens *l, double a, double b, double *lu, dou
 /* Coordinate k of Halton point n shifted by `shift` (in [0, 1)). */
 static double lens_dim(const struct lens *l, int k, int n, double shift)
 {
-	double v = l->halton[k * (l->max + 1) + n] + shift;
+	double v = (n <= l->ntab ? l->halton[k * (l->ntab + 1) + n] : radical_inverse((uint32_t)n, HALTON_BASES[k])) +
+	           shift;
 	return v >= 1 ? v - 1 : v;
 }
 
