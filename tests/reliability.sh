@@ -39,6 +39,20 @@ rc=$?
 check "SIGTERM in a #for with macro calls exits with status 2" [ $rc -eq 2 ]
 check "the message names the #for loop" grep -qE '^forloop\.pov:[0-9]+:[0-9]+: error: interrupted while parsing, in the #for loop at forloop\.pov:2$' err.txt
 
+# #fclose among #write's arguments (fuzz run 16: a use after free of the
+# file being written): an error, and what came before it written.
+cat > wclose.pov <<'POV'
+#fopen F "wclose.txt" write
+#write (F, "a", 1 + 0
+#fclose F
+, "b")
+POV
+"$LUCENT" -q +W8 +H6 -F wclose.pov > err.txt 2>&1
+rc=$?
+check "#fclose among #write's arguments is an error (status 1)" [ $rc -eq 1 ]
+check "it says the file was closed" grep -qE "^wclose\.pov:4:6: error: #write's file was closed among its arguments$" err.txt
+check "what #write had before is in the file" [ "$(cat wclose.txt)" = a1 ]
+
 # A function's sum() over 1e15 terms (fuzz run 12's hang): POV-Ray loops as
 # long, but Ctrl-C must stop it.
 cat > sum.pov <<'POV'

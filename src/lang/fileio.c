@@ -351,6 +351,10 @@ void parse_write(struct parser *p)
 {
 	parse_expect(p, TOK_LPAREN);
 	struct sdl_file *f = file_arg(p, true);
+	/* Held while writing, as #read holds its file: a #fclose among the
+	 * arguments freed it (found by fuzzing as a use after free). */
+	f->refs++;
+	int slot = parse_own(p, f, unref_file);
 	while (parse_accept(p, TOK_COMMA)) {
 		int bytes = 0;
 		bool big = false;
@@ -368,6 +372,10 @@ void parse_write(struct parser *p)
 				parse_advance(p);
 		}
 		struct value v = parse_expression(p);
+		if (!f->fp) {
+			parse_drop(p, &v);
+			parse_error(p, "#write's file was closed among its arguments");
+		}
 		if (bytes) {
 			parse_need_float(p, &v, "a binary #write");
 			put_word(f->fp, (long long)v.v[0], bytes, big);
@@ -398,5 +406,8 @@ void parse_write(struct parser *p)
 		}
 	}
 	parse_expect(p, TOK_RPAREN);
-	fflush(f->fp);
+	if (f->fp)
+		fflush(f->fp);
+	parse_release(p, slot);
+	sdl_file_unref(f);
 }
