@@ -8,18 +8,29 @@
 cd "$WORK" || exit 1
 
 # ---- Ctrl-C while parsing ----
+# interrupted SIGNAL NAME: renders NAME.pov in the background, sends it
+# SIGNAL half a second later and sets rc to its exit status. A watchdog
+# kills it after 30 s, so that a parse deaf to the signal fails the test
+# rather than hangs it.
+interrupted() {
+	"$LUCENT" -q +W8 +H6 "$2.pov" +O"$2.png" > err.txt 2>&1 &
+	pid=$!
+	sleep 0.5
+	kill -"$1" $pid
+	( sleep 30; kill -KILL $pid 2>/dev/null ) &
+	dog=$!
+	wait $pid
+	rc=$?
+	kill $dog 2>/dev/null
+}
+
 cat > loop.pov <<'POV'
 #declare I = 0;
 #while (1)
   #declare I = I + 1;
 #end
 POV
-"$LUCENT" -q +W8 +H6 loop.pov +Oloop.png > err.txt 2>&1 &
-pid=$!
-sleep 0.5
-kill -INT $pid
-wait $pid
-rc=$?
+interrupted INT loop
 check "Ctrl-C in an endless #while exits with status 2" [ $rc -eq 2 ]
 check "Ctrl-C names the loop and where it was" grep -qE '^loop\.pov:[234]:[0-9]+: error: interrupted while parsing, in the #while loop at loop\.pov:2$' err.txt
 check "Ctrl-C while parsing writes no image" [ ! -f loop.png ]
@@ -30,15 +41,21 @@ cat > forloop.pov <<'POV'
   Work(I)
 #end
 POV
-"$LUCENT" -q +W8 +H6 forloop.pov +Oforloop.png > err.txt 2>&1 &
-pid=$!
-sleep 0.5
-kill -TERM $pid
-wait $pid
-rc=$?
+interrupted TERM forloop
 check "SIGTERM in a #for with macro calls exits with status 2" [ $rc -eq 2 ]
 check "the message names the #for loop" grep -qE '^forloop\.pov:[0-9]+:[0-9]+: error: interrupted while parsing, in the #for loop at forloop\.pov:2$' err.txt
 
+# A function's sum() over 1e15 terms (fuzz run 12's hang): POV-Ray loops as
+# long, but Ctrl-C must stop it.
+cat > sum.pov <<'POV'
+#declare F = function(n) { sum(i, 1, n, i * i) }
+#declare X = F(1e15);
+POV
+interrupted INT sum
+check "Ctrl-C in a long sum() while parsing exits with status 2" [ $rc -eq 2 ]
+check "the message says where the parser was" grep -qE '^sum\.pov:[0-9]+:[0-9]+: error: interrupted while parsing' err.txt
+
+# ---- #write ----
 # #fclose among #write's arguments (fuzz run 16: a use after free of the
 # file being written): an error, and what came before it written.
 cat > wclose.pov <<'POV'
@@ -52,25 +69,6 @@ rc=$?
 check "#fclose among #write's arguments is an error (status 1)" [ $rc -eq 1 ]
 check "it says the file was closed" grep -qE "^wclose\.pov:4:6: error: #write's file was closed among its arguments$" err.txt
 check "what #write had before is in the file" [ "$(cat wclose.txt)" = a1 ]
-
-# A function's sum() over 1e15 terms (fuzz run 12's hang): POV-Ray loops as
-# long, but Ctrl-C must stop it.
-cat > sum.pov <<'POV'
-#declare F = function(n) { sum(i, 1, n, i * i) }
-#declare X = F(1e15);
-POV
-"$LUCENT" -q +W8 +H6 sum.pov +Osum.png > err.txt 2>&1 &
-pid=$!
-sleep 0.5
-kill -INT $pid
-# A watchdog, so that a sum() deaf to Ctrl-C fails the test, not hangs it.
-( sleep 30; kill -KILL $pid 2>/dev/null ) &
-dog=$!
-wait $pid
-rc=$?
-kill $dog 2>/dev/null
-check "Ctrl-C in a long sum() while parsing exits with status 2" [ $rc -eq 2 ]
-check "the message says where the parser was" grep -qE '^sum\.pov:[0-9]+:[0-9]+: error: interrupted while parsing' err.txt
 
 # ---- the file rule: what is allowed ----
 mkdir -p scene/sub lib
