@@ -309,20 +309,6 @@ static void blob_prepare(struct object *o)
  * them without a tree). */
 typedef void (*comp_fn)(void *ctx, int comp);
 
-/* Cut the span [*t0, *t1] to the part between ta and tb (either order). */
-static void narrow_span(double ta, double tb, double *t0, double *t1)
-{
-	if (ta > tb) {
-		double t = ta;
-		ta = tb;
-		tb = t;
-	}
-	if (ta > *t0)
-		*t0 = ta;
-	if (tb < *t1)
-		*t1 = tb;
-}
-
 /* Does the line o + t d (inv = 1 / d) cross box b? (The whole line: the
  * spans are cut to the ray's interval later.) */
 static bool ray_box(const struct aabb *b, vec3 o, vec3 inv)
@@ -336,7 +322,7 @@ static bool ray_box(const struct aabb *b, vec3 o, vec3 inv)
 				return false;
 			continue;
 		}
-		narrow_span((lo - oo) * iv, (hi - oo) * iv, &t0, &t1);
+		span_narrow((lo - oo) * iv, (hi - oo) * iv, &t0, &t1);
 	}
 	return t0 <= t1 + 1e-12 * (1 + fabs(t1));
 }
@@ -445,7 +431,7 @@ static bool elem_span(const struct elem *e, vec3 o, vec3 d, double q[3], double 
 	}
 	if (e->kind != EL_SPHERE) {
 		if (g1 != 0)
-			narrow_span((alo - g0) / g1, (ahi - g0) / g1, &t0, &t1);
+			span_narrow((alo - g0) / g1, (ahi - g0) / g1, &t0, &t1);
 		else if (g0 < alo || g0 > ahi)
 			return false;
 	}

@@ -19,6 +19,22 @@
 
 #define SOLVE_MAX_DEGREE 7
 
+/* Narrow the span [*lo, *hi] a solver searches to the part between a and
+ * b (in either order); false if nothing is left. */
+static inline bool span_narrow(double a, double b, double *lo, double *hi)
+{
+	if (a > b) {
+		double t = a;
+		a = b;
+		b = t;
+	}
+	if (a > *lo)
+		*lo = a;
+	if (b < *hi)
+		*hi = b;
+	return *lo <= *hi;
+}
+
 /* Real roots of a t^2 + b t + c = 0, ascending, into r[0..1]; returns the
  * count (0, 1 for a double root or a linear equation, or 2). */
 int solve_quadratic(double a, double b, double c, double r[2]);

@@ -16,22 +16,6 @@ struct torus {
 
 static const double TWO_PI = 6.28318530717958647692;
 
-/* Narrow [*s0, *s1] to the interval between a and b (in either order);
- * false if nothing is left. */
-static bool narrow(double a, double b, double *s0, double *s1)
-{
-	if (a > b) {
-		double t = a;
-		a = b;
-		b = t;
-	}
-	if (a > *s0)
-		*s0 = a;
-	if (b < *s1)
-		*s1 = b;
-	return *s0 <= *s1;
-}
-
 /* Narrow [*s0, *s1] to where |o + s d| <= h for one coordinate; false when
  * nothing is left. */
 static bool clip_slab(double o, double d, double h, double *s0, double *s1)
@@ -39,7 +23,7 @@ static bool clip_slab(double o, double d, double h, double *s0, double *s1)
 	if (d == 0)
 		return fabs(o) <= h;
 	double a = (-h - o) / d, b = (h - o) / d;
-	return narrow(a, b, s0, s1);
+	return span_narrow(a, b, s0, s1);
 }
 
 /* Narrow [*s0, *s1] to where the ray o + s u (u a unit vector) is within
@@ -61,7 +45,7 @@ static bool clip_cylinder(vec3 o, vec3 u, double rb, double *s0, double *s1)
 		a = q / A;
 		b = C / q;
 	}
-	return narrow(a, b, s0, s1);
+	return span_narrow(a, b, s0, s1);
 }
 
 /* The crossings tmin < t < tmax of the ray with the torus, ascending, into
