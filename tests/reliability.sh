@@ -55,6 +55,19 @@ interrupted INT sum
 check "Ctrl-C in a long sum() while parsing exits with status 2" [ $rc -eq 2 ]
 check "the message says where the parser was" grep -qE '^sum\.pov:[0-9]+:[0-9]+: error: interrupted while parsing' err.txt
 
+# Focal blur with blur_samples 2e9 and variance 0: each pixel takes its 2e9
+# samples, hours (POV-Ray too); the render looks at its stop flag between
+# tiles, so the lens loop must look at it as well.
+cat > blur.pov <<'POV'
+camera { location -5*z look_at 0 aperture 1 focal_point 0 blur_samples 2000000000 variance 0 }
+sphere { 0, 1 pigment { rgb 1 } }
+light_source { <1, 2, -3> rgb 1 }
+POV
+interrupted INT blur
+check "Ctrl-C inside a pixel of 2e9 blur samples exits with status 2" [ $rc -eq 2 ]
+check "the message says no image was written" grep -q 'interrupted; no image written' err.txt
+check "and none was" [ ! -f blur.png ]
+
 # ---- #write ----
 # #fclose among #write's arguments (fuzz run 16: a use after free of the
 # file being written): an error, and what came before it written.

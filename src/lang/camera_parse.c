@@ -228,6 +228,19 @@ static void parse_angle(struct parser *p, struct camera *c, struct cam_items *it
 	}
 }
 
+/* A count of blur_samples: POV-Ray's int of the number (a fraction is cut
+ * off; past an int's range it is the smallest int), at least 1. */
+static int blur_count(struct parser *p, struct srcpos at, double x)
+{
+	int n = parse_int_of(x);
+	if (n < 1) {
+		if (x >= 1)
+			parse_error_at(p, at, "blur_samples must be at most 2147483647, not %g", x);
+		parse_error_at(p, at, "blur_samples must be at least 1, not %g", x);
+	}
+	return n;
+}
+
 /* blur_samples := blur_samples [MIN [',']] MAX
  * One number is the maximum; the minimum is then 4, or 7 from a maximum of
  * 7 up (never above the maximum). */
@@ -235,23 +248,18 @@ static void parse_blur_samples(struct parser *p, struct camera *c)
 {
 	parse_advance(p);
 	struct srcpos at = parse_peek(p)->pos;
-	double a = parse_float(p);
-	if (a < 1)
-		parse_error_at(p, at, "blur_samples must be at least 1, not %g", a);
+	int a = blur_count(p, at, parse_float(p));
 	if (second_number(p)) {
 		struct srcpos bt = parse_peek(p)->pos;
-		double b = parse_float(p);
-		if (b < 1)
-			parse_error_at(p, bt, "blur_samples must be at least 1, not %g", b);
-		if ((int)a > (int)b)
-			parse_error_at(p, at, "the minimum of blur_samples (%d) is larger than the maximum (%d)", (int)a,
-			               (int)b);
-		c->blur_samples_min = (int)a;
-		c->blur_samples_max = (int)b;
+		int b = blur_count(p, bt, parse_float(p));
+		if (a > b)
+			parse_error_at(p, at, "the minimum of blur_samples (%d) is larger than the maximum (%d)", a, b);
+		c->blur_samples_min = a;
+		c->blur_samples_max = b;
 	} else {
-		int max = (int)a, min = max < 7 ? 4 : 7;
-		c->blur_samples_max = max;
-		c->blur_samples_min = min < max ? min : max;
+		int min = a < 7 ? 4 : 7;
+		c->blur_samples_max = a;
+		c->blur_samples_min = min < a ? min : a;
 	}
 }
 

@@ -47,9 +47,21 @@ enum { BOKEH_N = 128 };
 static const uint32_t HALTON_BASES[4] = {2, 3, 5, 7};
 enum { HALTON_TABLE = 65536 };
 
+/* The variance limits worked out in advance, and the degrees of freedom
+ * past which the chi-square quantile is Wilson and Hilferty's (the exact
+ * one takes a bisection over the incomplete gamma function, too dear to
+ * run for each of a huge blur_samples' check points or at each check of a
+ * pixel; past this size the two agree within 4e-8 for a confidence up to
+ * 0.999, measured). */
+enum { LIMIT_TABLE = 65536 };
+
 struct lens {
 	int min, max;
-	double *limit;   /* [n], n = 0..max: the variance limit at a check point, -1 elsewhere */
+	double *limit;   /* [n], n = 0..nlimit: the variance limit at a check point, -1 elsewhere */
+	int nlimit;      /* max, but at most LIMIT_TABLE; past it, lens_limit works the limit out */
+	double variance, confidence;
+	double scale;    /* the chi-square quantile at max - 1 (1 for max 1) */
+	double z;        /* the standard normal quantile exceeded with probability confidence */
 	double *halton;  /* [k * (ntab + 1) + n]: Halton point n's coordinate in dimension k
 	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once for
 	                  * n <= ntab: the per-sample integer divisions stalled the
@@ -102,12 +114,39 @@ static double chi2_upper_quantile(int k, double q)
 	double lo = 0, hi = k + 20 + 20 * sqrt((double)k);
 	for (int i = 0; i < 200; i++) {
 		double mid = 0.5 * (lo + hi);
+		if (mid == lo || mid == hi)
+			break; /* converged: further steps change nothing */
 		if (1 - gamma_p(0.5 * k, 0.5 * mid) > q)
 			lo = mid;
 		else
 			hi = mid;
 	}
 	return 0.5 * (lo + hi);
+}
+
+/* The z that a standard normal variable exceeds with probability q, by
+ * bisection. */
+static double normal_upper_quantile(double q)
+{
+	double lo = -40, hi = 40;
+	for (int i = 0; i < 200; i++) {
+		double mid = 0.5 * (lo + hi);
+		if (0.5 * erfc(mid / M_SQRT2) > q)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+/* chi2_upper_quantile(k, l->confidence), by Wilson and Hilferty's cube
+ * past LIMIT_TABLE degrees of freedom. */
+static double lens_chi2(const struct lens *l, int k)
+{
+	if (k <= LIMIT_TABLE)
+		return chi2_upper_quantile(k, l->confidence);
+	double v = 2.0 / (9.0 * k), c = 1 - v + l->z * sqrt(v);
+	return k * c * c * c;
 }
 
 /* The radical inverse of i in base b (the Halton sequence). */
@@ -186,6 +225,20 @@ static void bokeh_tables(struct lens *l, const struct pigment *pg, const struct 
 	}
 }
 
+/* The variance limit after n samples: -1 where POV-Ray does not check
+ * (see the file comment). */
+static double lens_limit_at(const struct lens *l, int n)
+{
+	if (!(n > 0 && n < l->max && check_point(n, l->max)))
+		return -1;
+	return l->variance == 0 ? 0 : l->variance * n * lens_chi2(l, n) / l->scale;
+}
+
+static double lens_limit(const struct lens *l, int n)
+{
+	return n <= l->nlimit ? l->limit[n] : lens_limit_at(l, n);
+}
+
 struct lens *lens_new(const struct scene *s)
 {
 	const struct camera *c = &s->camera;
@@ -194,14 +247,16 @@ struct lens *lens_new(const struct scene *s)
 		abort();
 	l->max = c->blur_samples_max;
 	l->min = c->blur_samples_min;
-	l->limit = malloc((size_t)(l->max + 1) * sizeof *l->limit);
+	l->variance = c->variance;
+	l->confidence = c->confidence;
+	l->z = normal_upper_quantile(c->confidence);
+	l->scale = l->max > 1 ? lens_chi2(l, l->max - 1) : 1;
+	l->nlimit = l->max < LIMIT_TABLE ? l->max : LIMIT_TABLE;
+	l->limit = malloc((size_t)(l->nlimit + 1) * sizeof *l->limit);
 	if (!l->limit)
 		abort();
-	double scale = l->max > 1 ? chi2_upper_quantile(l->max - 1, c->confidence) : 1;
-	for (int n = 0; n <= l->max; n++)
-		l->limit[n] = n > 0 && n < l->max && check_point(n, l->max)
-		                      ? c->variance * n * chi2_upper_quantile(n, c->confidence) / scale
-		                      : -1;
+	for (int n = 0; n <= l->nlimit; n++)
+		l->limit[n] = lens_limit_at(l, n);
 	l->ntab = l->max < HALTON_TABLE ? l->max : HALTON_TABLE;
 	l->halton = malloc(4 * (size_t)(l->ntab + 1) * sizeof *l->halton);
 	if (!l->halton)
@@ -340,11 +395,18 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
 			mean[k] += d / n;
 			m2[k] += d * (v[k] - mean[k]);
 		}
-		if (n >= l->min && l->limit[n] >= 0) {
-			double lim = l->limit[n] * n; /* m2 is n times the variance */
-			if (m2[0] < lim && m2[1] < lim && m2[2] < lim)
-				break;
+		if (n >= l->min) {
+			double lim = lens_limit(l, n);
+			if (lim >= 0) {
+				lim *= n; /* m2 is n times the variance */
+				if (m2[0] < lim && m2[1] < lim && m2[2] < lim)
+					break;
+			}
 		}
+		/* A huge blur_samples is the user's to stop: the render looks at
+		 * its stop flag between tiles, and a pixel can take hours. */
+		if ((n & 4095) == 0 && tr->stop && *tr->stop)
+			break;
 	}
 	return rgb_make(mean[0], mean[1], mean[2]);
 }

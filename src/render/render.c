@@ -429,6 +429,7 @@ bool render_image(const struct prepared *p, const struct render_opts *o, struct 
 	for (int i = 0; i < nt; i++) {
 		w[i].job = &j;
 		tracer_init(&w[i].tr, p);
+		w[i].tr.stop = o->stop;
 		worker_scratch(&w[i], o);
 		for (int k = 0; k < 3; k++)
 			w[i].memo.in[k] = NAN; /* equal to no colour */

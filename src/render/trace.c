@@ -34,6 +34,7 @@ void tracer_init(struct tracer *tr, const struct prepared *p)
 	if (!tr->last_blocker || !tr->lit || !tr->illum) abort();
 	area_scratch_init(&tr->area, tr->lights->max_samples);
 	tr->camera_limit = camera_ray_limit(&p->scene->camera);
+	tr->stop = NULL;
 }
 
 void tracer_free(struct tracer *tr)

@@ -10,6 +10,8 @@
 #include "render/prepare.h"
 #include "render/stats.h"
 
+#include <signal.h>
+
 struct lit;
 
 struct tracer {
@@ -31,6 +33,8 @@ struct tracer {
 	double camera_transmit;
 	int camera_rays;
 	double camera_limit;                 /* how far camera rays see (camera_ray_limit) */
+	volatile sig_atomic_t *stop;         /* the render's stop flag (render_opts), or NULL: a
+	                                      * pixel of many samples looks at it too */
 };
 
 void tracer_init(struct tracer *tr, const struct prepared *p);
