@@ -114,7 +114,8 @@ PATTERN_FN(square)
 {
 	(void)pt; (void)ctx;
 	double ix = floor(q.x + BLOCK_EPS), iz = floor(q.z + BLOCK_EPS);
-	int a = (int)fabs(fmod(ix, 2.0)), b = (int)fabs(fmod(iz, 2.0));
+	/* (the parities by comparison: an infinite coordinate gives NaN) */
+	int a = fabs(fmod(ix, 2.0)) == 1.0, b = fabs(fmod(iz, 2.0)) == 1.0;
 	static const int entry[2][2] = {{0, 1}, {3, 2}};
 	return entry[a][b];
 }
@@ -134,7 +135,8 @@ PATTERN_FN(triangular)
 	double u = q.x - q.z / SQRT3 + BLOCK_EPS;
 	double row = floor(w), col = floor(u);
 	bool up = (u - col) + (w - row) < 1.0;
-	int k = (int)fmod(col - row, 3.0);
+	double m = fmod(col - row, 3.0);
+	int k = fabs(m) < 3.0 ? (int)m : 0; /* NaN at an infinite coordinate */
 	if (k < 0)
 		k += 3;
 	static const int up_entry[3] = {0, 4, 2}, down_entry[3] = {3, 5, 1};

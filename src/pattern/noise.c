@@ -103,7 +103,7 @@ static inline int lattice3(double v, double *frac)
 	f = fmod(f, (double)NOISE3_SIZE);
 	if (f < 0)
 		f += NOISE3_SIZE;
-	return (int)f;
+	return f >= 0 && f < NOISE3_SIZE ? (int)f : 0; /* NaN at an infinite v */
 }
 
 /* Generator 3's noise at p. */

@@ -185,7 +185,10 @@ PATTERN_FN(waves)
  * coordinates, each taken modulo 4096 (no offset, unlike the noise). */
 static int wrap12(double v)
 {
-	return (int)(v - 4096.0 * floor(v / 4096.0));
+	double r = v - 4096.0 * floor(v / 4096.0);
+	/* An infinite coordinate (a function pattern called at 1e300 * 1e300)
+	 * leaves NaN, which no int holds: cube 0 there. */
+	return r >= 0 && r < 4096.0 ? (int)r : 0;
 }
 
 static int cube_hash(double i, double j, double k)

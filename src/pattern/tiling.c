@@ -373,6 +373,12 @@ static void p1_vertices(double ux, double uz, double reach, struct p1_vertex *pe
 		int lo[5], hi[5];
 		for (int j = 0; j < 5; j++) {
 			double m = 0.4 * (ux * pen_e[j][0] + uz * pen_e[j][1]) + c / 5.0;
+			/* Past an int's range (or at an infinite point) the lattice
+			 * indices do not fit: no vertex there (the tiling is 0). */
+			if (!(fabs(m) < 1e9)) {
+				*np = *ng = 0;
+				return;
+			}
 			lo[j] = (int)ceil(m - h);
 			hi[j] = (int)floor(m + h);
 		}

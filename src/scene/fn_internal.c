@@ -59,6 +59,14 @@ static double sq(double v)
  * limit] (and 0 for NaN) so that the cast is always defined. Counts of
  * tubes and octaves go through it, so a wild parameter cannot make a
  * function loop for long. */
+/* (int)v as x86 makes it, which POV-Ray's fractions of octaves take:
+ * INT_MIN out of an int's range and for NaN (the C cast is undefined
+ * there). */
+static double x86_int(double v)
+{
+	return v > -2147483649.0 && v < 2147483648.0 ? (double)(int)v : -2147483648.0;
+}
+
 static int to_int(double v, int limit)
 {
 	if (!(v == v))
@@ -937,7 +945,7 @@ static double f_hetero_mf(const double *a)
 		double weight = T > 0 ? pow(v, T) : 1;
 		v += (snoise(x, y, z, gen) + off) * pow(freq, -H) * weight;
 	}
-	double rem = limit - (int)limit;
+	double rem = limit - x86_int(limit);
 	if (rem > 0) {
 		freq *= lac;
 		x *= lac;
@@ -973,7 +981,7 @@ static double f_ridge(const double *a)
 	int gen = to_int(a[8], 1 << 20);
 	double limit = oct < 64 ? oct : 64;
 	int whole = limit >= 1 ? (int)limit : 1;
-	double frac = limit - (int)limit;
+	double frac = limit - x86_int(limit);
 	double v = 0, total = 0, amp = 1;
 	for (int i = 0; i <= whole; i++) {
 		double w = i < whole ? amp : frac * amp;
