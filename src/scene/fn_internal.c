@@ -55,10 +55,6 @@ static double sq(double v)
 	return v * v;
 }
 
-/* v truncated toward zero as C's cast does, but kept within [-limit,
- * limit] (and 0 for NaN) so that the cast is always defined. Counts of
- * tubes and octaves go through it, so a wild parameter cannot make a
- * function loop for long. */
 /* (int)v as x86 makes it, which POV-Ray's fractions of octaves take:
  * INT_MIN out of an int's range and for NaN (the C cast is undefined
  * there). */
@@ -67,6 +63,10 @@ static double x86_int(double v)
 	return v > -2147483649.0 && v < 2147483648.0 ? (double)(int)v : -2147483648.0;
 }
 
+/* v truncated toward zero as C's cast does, but kept within [-limit,
+ * limit] (and 0 for NaN) so that the cast is always defined. Counts of
+ * tubes and octaves go through it, so a wild parameter cannot make a
+ * function loop for long. */
 static int to_int(double v, int limit)
 {
 	if (!(v == v))
