@@ -1097,15 +1097,48 @@ void parse_default(struct parser *p)
 {
 	parse_expect(p, TOK_LBRACE);
 	while (!parse_accept(p, TOK_RBRACE)) {
-		if (parse_is_kw(p, KW_TEXTURE))
-			parse_texture(p, &p->default_tex);
-		else if (parse_is_kw(p, KW_PIGMENT))
-			parse_pigment(p, &parse_private_texture(p, &p->default_tex)->pigment);
-		else if (parse_is_kw(p, KW_NORMAL))
-			parse_normal(p, &parse_private_texture(p, &p->default_tex)->normal);
-		else if (parse_is_kw(p, KW_FINISH))
-			parse_finish(p, &parse_private_texture(p, &p->default_tex)->finish);
-		else
+		/* Each part is read into a value of its own and set as the default
+		 * only once it is whole: a #default among its tokens changes the
+		 * default texture, and may free it, while it is read (fuzz run 19:
+		 * a leak, and then uses after free). The part starts from the
+		 * defaults as they are when its first token is read, as in POV-Ray
+		 * (measured: `#default { texture { #default { pigment { Red } } } }`
+		 * leaves the default red). */
+		if (parse_is_kw(p, KW_TEXTURE)) {
+			struct srcpos at = parse_peek(p)->pos;
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			struct texture *t = read_texture(p, TOK_RBRACE);
+			if (texture_is_patterned(t)) {
+				texture_unref(t);
+				parse_error_at(p, at, "a #default texture cannot be patterned (a texture_map, or a block "
+				               "pattern of textures), as in POV-Ray");
+			}
+			texture_unref(p->default_tex);
+			p->default_tex = t;
+		} else if (parse_is_kw(p, KW_FINISH)) {
+			struct finish f = parse_private_texture(p, &p->default_tex)->finish;
+			parse_finish(p, &f);
+			parse_private_texture(p, &p->default_tex)->finish = f;
+		} else if (parse_is_kw(p, KW_PIGMENT) || parse_is_kw(p, KW_NORMAL)) {
+			bool pig = parse_is_kw(p, KW_PIGMENT);
+			parse_private_texture(p, &p->default_tex); /* refuses a patterned default */
+			parse_advance(p);
+			parse_expect(p, TOK_LBRACE);
+			const struct texture *d = p->default_tex;
+			if (pig) {
+				struct pigment *pg = read_pigment(p, d ? d->pigment : NULL, TOK_RBRACE);
+				struct texture *t = parse_private_texture(p, &p->default_tex);
+				pigment_unref(t->pigment);
+				t->pigment = pg;
+			} else {
+				struct normal *n = read_normal(p, d ? d->normal : NULL, TOK_RBRACE);
+				struct texture *t = parse_private_texture(p, &p->default_tex);
+				normal_unref(t->normal);
+				t->normal = n;
+			}
+		} else {
 			parse_expected(p, "texture, pigment, normal, finish or '}' in #default");
+		}
 	}
 }
