@@ -33,8 +33,13 @@
  * one-second hang threshold. Macro calls nest at most FUZZ_MAX_DEPTH deep
  * (lucent's default is 1000): a mutated test that recursed 1000 deep,
  * building a text object at each level, held 193 MB and took 0.23 s of CPU
- * built normally, 3 to 3.6 s under the sanitizers (run 18). */
-enum { FUZZ_MAX_STEPS = 5000, FUZZ_MAX_SIZE = 1000000, FUZZ_MAX_DEPTH = 100, FUZZ_W = 8, FUZZ_H = 6 };
+ * built normally, 3 to 3.6 s under the sanitizers (run 18). Strings are
+ * capped lower than arrays: a loop that appends n bytes per turn copies
+ * about steps x length / 2 bytes in all, 2.5 GB at the worst n for a cap of
+ * 1000000 (an endless #while appending 90 bytes per turn took 2.2 s under
+ * the sanitizers, run 19b), 250 MB for 100000. */
+enum { FUZZ_MAX_STEPS = 5000, FUZZ_MAX_SIZE = 1000000, FUZZ_MAX_STRING = 100000, FUZZ_MAX_DEPTH = 100,
+       FUZZ_W = 8, FUZZ_H = 6 };
 
 /* The stdlib's files are read and lexed once, into a source manager kept
  * across inputs: an input's own files are forgotten after it
@@ -149,7 +154,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		.image_height = FUZZ_H,
 		.debug_out = fuzz_null,
 		.max_steps = FUZZ_MAX_STEPS,
-		.limits = {.macro_depth = FUZZ_MAX_DEPTH, .array_size = FUZZ_MAX_SIZE, .string_length = FUZZ_MAX_SIZE,
+		.limits = {.macro_depth = FUZZ_MAX_DEPTH, .array_size = FUZZ_MAX_SIZE, .string_length = FUZZ_MAX_STRING,
 		           .mesh_size = FUZZ_MAX_SIZE},
 	};
 	int rc = parse_scene(sm, &diag, &po, scene);
