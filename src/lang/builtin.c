@@ -172,10 +172,7 @@ static double f_seed(struct parser *p, double s)
 
 static double f_rand(struct parser *p, double stream, struct srcpos at)
 {
-	/* Checked as a float first (a huge value does not fit a long); the
-	 * index is the value truncated toward zero, so with no stream at all
-	 * even -0.5 (index 0) has none. */
-	if (!(stream > -1 && stream < p->nrng) || p->nrng == 0)
+	if (!parse_rng_stream(p, stream))
 		parse_error_at(p, at, "rand() needs a stream made by seed(), not %g", stream);
 	long i = (long)stream;
 	p->rng[i] = p->rng[i] * 1812433253u + 12345u;

@@ -698,9 +698,7 @@ static bool run_scalar(struct parser *p, struct xentry *e, struct xval *out)
 		}
 			/* fall through */
 		case X_RAND: {
-			/* Checked as a float first, as f_rand does: a huge
-			 * stream does not fit a long. */
-			if (!(st[sp - 1] > -1 && st[sp - 1] < p->nrng) || nundo == XRAND_UNDO)
+			if (!parse_rng_stream(p, st[sp - 1]) || nundo == XRAND_UNDO)
 				goto fail;
 			long i = (long)st[sp - 1];
 			undo[nundo].i = i;
@@ -846,8 +844,7 @@ static bool run(struct parser *p, struct xentry *e, bool want_float, struct xval
 		}
 			/* fall through */
 		case X_RAND: {
-			if (st[sp - 1].kind != VAL_FLOAT || !(st[sp - 1].v[0] > -1 && st[sp - 1].v[0] < p->nrng) ||
-			    nundo == XRAND_UNDO)
+			if (st[sp - 1].kind != VAL_FLOAT || !parse_rng_stream(p, st[sp - 1].v[0]) || nundo == XRAND_UNDO)
 				goto fail;
 			long i = (long)st[sp - 1].v[0];
 			undo[nundo].i = i;

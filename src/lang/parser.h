@@ -137,6 +137,14 @@ void parse_step(struct parser *p, struct srcpos pos, bool loop_head);
 _Noreturn void parse_expected(struct parser *p, const char *what);
 void parse_warning_at(struct parser *p, struct srcpos pos, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
+/* Is s a rand() stream: a number whose truncation toward zero indexes one
+ * that seed() made? Checked as a float (a huge s does not fit a long); with
+ * no stream at all, even -0.5 (index 0) has none. */
+static inline bool parse_rng_stream(const struct parser *p, double s)
+{
+	return p->nrng > 0 && s > -1 && s < p->nrng;
+}
+
 /* Set whether comparisons bind (struct parser's rel_ok); returns the old
  * setting, for the caller to put back. */
 static inline bool parse_set_rel(struct parser *p, bool on)

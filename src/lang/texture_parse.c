@@ -1122,7 +1122,6 @@ void parse_default(struct parser *p)
 			parse_private_texture(p, &p->default_tex)->finish = f;
 		} else if (parse_is_kw(p, KW_PIGMENT) || parse_is_kw(p, KW_NORMAL)) {
 			bool pig = parse_is_kw(p, KW_PIGMENT);
-			parse_private_texture(p, &p->default_tex); /* refuses a patterned default */
 			parse_advance(p);
 			parse_expect(p, TOK_LBRACE);
 			const struct texture *d = p->default_tex;

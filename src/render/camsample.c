@@ -45,30 +45,28 @@ enum { BOKEH_N = 128 };
 /* The Halton bases of the lens sample's four dimensions: lens u and v,
  * pixel x and y. */
 static const uint32_t HALTON_BASES[4] = {2, 3, 5, 7};
-enum { HALTON_TABLE = 65536 };
 
-/* The variance limits worked out in advance, and the degrees of freedom
- * past which the chi-square quantile is Wilson and Hilferty's (the exact
- * one takes a bisection over the incomplete gamma function, too dear to
- * run for each of a huge blur_samples' check points or at each check of a
- * pixel; past this size the two agree within 4e-8 for a confidence up to
+/* How many samples' worth of a lens's tables are worked out in advance (a
+ * huge blur_samples is not worth 40 bytes a sample; past the tables, what
+ * a sample needs is worked out as it is needed), and the degrees of
+ * freedom past which the chi-square quantile is Wilson and Hilferty's (the
+ * exact one takes a bisection over the incomplete gamma function, too dear
+ * to run for each of a huge blur_samples' check points or at each check of
+ * a pixel; past this size the two agree within 4e-8 for a confidence up to
  * 0.999, measured). */
-enum { LIMIT_TABLE = 65536 };
+enum { LENS_TABLE = 65536 };
 
 struct lens {
 	int min, max;
-	double *limit;   /* [n], n = 0..nlimit: the variance limit at a check point, -1 elsewhere */
-	int nlimit;      /* max, but at most LIMIT_TABLE; past it, lens_limit works the limit out */
+	int ntab;        /* max, but at most LENS_TABLE: the samples the tables hold */
+	double *limit;   /* [n], n = 0..ntab: the variance limit at a check point, -1 elsewhere
+	                  * (lens_limit works it out past the table) */
 	double variance, confidence;
 	double scale;    /* the chi-square quantile at max - 1 (1 for max 1) */
 	double z;        /* the standard normal quantile exceeded with probability confidence */
 	double *halton;  /* [k * (ntab + 1) + n]: Halton point n's coordinate in dimension k
-	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once for
-	                  * n <= ntab: the per-sample integer divisions stalled the
-	                  * pipeline */
-	int ntab;        /* max, but at most HALTON_TABLE (a huge blur_samples is not
-	                  * worth 32 bytes a sample; past the table, the points are
-	                  * worked out as they are needed) */
+	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once: the
+	                  * per-sample integer divisions stalled the pipeline */
 	double *col_cdf; /* bokeh: cumulative weight of the columns (BOKEH_N + 1), NULL without */
 	double *row_cdf; /* bokeh: per column, cumulative weight of its rows (BOKEH_N x (BOKEH_N + 1)) */
 };
@@ -140,10 +138,10 @@ static double normal_upper_quantile(double q)
 }
 
 /* chi2_upper_quantile(k, l->confidence), by Wilson and Hilferty's cube
- * past LIMIT_TABLE degrees of freedom. */
+ * past LENS_TABLE degrees of freedom. */
 static double lens_chi2(const struct lens *l, int k)
 {
-	if (k <= LIMIT_TABLE)
+	if (k <= LENS_TABLE)
 		return chi2_upper_quantile(k, l->confidence);
 	double v = 2.0 / (9.0 * k), c = 1 - v + l->z * sqrt(v);
 	return k * c * c * c;
@@ -236,7 +234,7 @@ static double lens_limit_at(const struct lens *l, int n)
 
 static double lens_limit(const struct lens *l, int n)
 {
-	return n <= l->nlimit ? l->limit[n] : lens_limit_at(l, n);
+	return n <= l->ntab ? l->limit[n] : lens_limit_at(l, n);
 }
 
 struct lens *lens_new(const struct scene *s)
@@ -251,13 +249,12 @@ struct lens *lens_new(const struct scene *s)
 	l->confidence = c->confidence;
 	l->z = normal_upper_quantile(c->confidence);
 	l->scale = l->max > 1 ? lens_chi2(l, l->max - 1) : 1;
-	l->nlimit = l->max < LIMIT_TABLE ? l->max : LIMIT_TABLE;
-	l->limit = malloc((size_t)(l->nlimit + 1) * sizeof *l->limit);
+	l->ntab = l->max < LENS_TABLE ? l->max : LENS_TABLE;
+	l->limit = malloc((size_t)(l->ntab + 1) * sizeof *l->limit);
 	if (!l->limit)
 		abort();
-	for (int n = 0; n <= l->nlimit; n++)
+	for (int n = 0; n <= l->ntab; n++)
 		l->limit[n] = lens_limit_at(l, n);
-	l->ntab = l->max < HALTON_TABLE ? l->max : HALTON_TABLE;
 	l->halton = malloc(4 * (size_t)(l->ntab + 1) * sizeof *l->halton);
 	if (!l->halton)
 		abort();
