@@ -67,6 +67,9 @@ struct lens {
 	double *halton;  /* [k * (ntab + 1) + n]: Halton point n's coordinate in dimension k
 	                  * (radical_inverse(n, HALTON_BASES[k])), worked out once: the
 	                  * per-sample integer divisions stalled the pipeline */
+	double *turn;    /* [2 * n], [2 * n + 1]: cos and sin of 2 pi times point n's
+	                  * coordinate 1, the lens angle before the pixel's shift turns
+	                  * it (no sincos per sample) */
 	double *col_cdf; /* bokeh: cumulative weight of the columns (BOKEH_N + 1), NULL without */
 	double *row_cdf; /* bokeh: per column, cumulative weight of its rows (BOKEH_N x (BOKEH_N + 1)) */
 };
@@ -261,6 +264,14 @@ struct lens *lens_new(const struct scene *s)
 	for (int k = 0; k < 4; k++)
 		for (int n = 0; n <= l->ntab; n++)
 			l->halton[k * (l->ntab + 1) + n] = radical_inverse((uint32_t)n, HALTON_BASES[k]);
+	l->turn = malloc(2 * (size_t)(l->ntab + 1) * sizeof *l->turn);
+	if (!l->turn)
+		abort();
+	for (int n = 0; n <= l->ntab; n++) {
+		double phi = 2 * M_PI * l->halton[(l->ntab + 1) + n];
+		l->turn[2 * n] = cos(phi);
+		l->turn[2 * n + 1] = sin(phi);
+	}
 	if (c->bokeh)
 		bokeh_tables(l, c->bokeh, s);
 	return l;
@@ -272,6 +283,7 @@ void lens_free(struct lens *l)
 		return;
 	free(l->limit);
 	free(l->halton);
+	free(l->turn);
 	free(l->col_cdf);
 	free(l->row_cdf);
 	free(l);
@@ -373,12 +385,24 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
 	double shift[4];
 	for (int k = 0; k < 4; k++)
 		shift[k] = hash_uniform((uint32_t)px, (uint32_t)py, sample, PURPOSE_LENS + (uint32_t)k);
+	/* On the disc, the shift of the angle's coordinate turns the lens
+	 * point by 2 pi shift[1]: the table's turns of the unshifted points,
+	 * turned once more (the same angle, wrapped or not). */
+	bool disc = !l->col_cdf;
+	double tc = disc ? cos(2 * M_PI * shift[1]) : 1, ts = disc ? sin(2 * M_PI * shift[1]) : 0;
 	/* Welford's running mean and sum of squared deviations per channel. */
 	double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
 	for (int n = 1; n <= l->max; n++) {
 		/* Halton point 0 is the corner: the samples start at 1. */
 		double lu, lv;
-		lens_point(l, lens_dim(l, 0, n, shift[0]), lens_dim(l, 1, n, shift[1]), &lu, &lv);
+		if (disc && n <= l->ntab) {
+			double rad = 0.5 * sqrt(lens_dim(l, 0, n, shift[0]));
+			double c0 = l->turn[2 * n], s0 = l->turn[2 * n + 1];
+			lu = rad * (c0 * tc - s0 * ts);
+			lv = rad * (s0 * tc + c0 * ts);
+		} else {
+			lens_point(l, lens_dim(l, 0, n, shift[0]), lens_dim(l, 1, n, shift[1]), &lu, &lv);
+		}
 		double jx = lens_dim(l, 2, n, shift[2]) - 0.5, jy = lens_dim(l, 3, n, shift[3]) - 0.5;
 		struct ray r;
 		rgb c = rgb_make(0, 0, 0);
@@ -386,10 +410,10 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
 		if (sample_ray(tr, x + jx, y + jy, w, h, lu, lv, &r))
 			c = trace_ray(tr, &r, 1, RAY_CAMERA, &hit);
 		*any = *any || hit;
-		double v[3] = {c.r, c.g, c.b};
+		double v[3] = {c.r, c.g, c.b}, inv = 1.0 / n;
 		for (int k = 0; k < 3; k++) {
 			double d = v[k] - mean[k];
-			mean[k] += d / n;
+			mean[k] += d * inv;
 			m2[k] += d * (v[k] - mean[k]);
 		}
 		if (n >= l->min) {

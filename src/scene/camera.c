@@ -289,6 +289,24 @@ static bool pinhole(const struct camera *c, double u, double v, struct ray *r)
 bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
                 struct ray *r)
 {
+	double k = c->aperture / 2;
+	if (c->kind == CAMERA_PERSPECTIVE && (lu != 0 || lv != 0)) {
+		/* The lens ray below with the pinhole ray left unnormalised (one
+		 * square root and division less a sample): it starts at the
+		 * location, so it meets the plane in focus at focal_dist /
+		 * (d . D) times d. */
+		vec3 d = v3_add(c->direction, comb(x / w - 0.5, c->right, 0.5 - y / h, c->up, 0, c->dn));
+		double dd = v3_dot(d, c->dn);
+		if (dd <= 0 || dd * dd < 1e-12 * v3_dot(d, d)) {
+			r->org = c->location;
+			r->dir = v3_norm(d);
+			return true;
+		}
+		vec3 focus = v3_madd(c->location, d, c->focal_dist / dd);
+		r->org = v3_add(c->location, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
+		r->dir = v3_norm(v3_sub(focus, r->org));
+		return true;
+	}
 	if (!pinhole(c, x / w - 0.5, 0.5 - y / h, r))
 		return false;
 	if (lu == 0 && lv == 0)
@@ -305,7 +323,6 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
 		return true;
 	double t = (c->focal_dist - v3_dot(v3_sub(r->org, c->location), c->dn)) / cosd;
 	vec3 focus = v3_madd(r->org, r->dir, t);
-	double k = c->aperture / 2;
 	r->org = v3_add(r->org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
 	r->dir = v3_norm(v3_sub(focus, r->org));
 	return true;
