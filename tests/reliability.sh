@@ -83,6 +83,21 @@ check "#fclose among #write's arguments is an error (status 1)" [ $rc -eq 1 ]
 check "it says the file was closed" grep -qE "^wclose\.pov:4:6: error: #write's file was closed among its arguments$" err.txt
 check "what #write had before is in the file" [ "$(cat wclose.txt)" = a1 ]
 
+# Binary words are rounded (floor(x + 0.5)) and held to the word's range;
+# a float past a long long's range was cast as it was (fuzz run 21, UBSan).
+# The bytes are POV-Ray 3.7's for the same #write.
+cat > words.pov <<'POV'
+#fopen F "words.bin" write
+#write (F, uint8 300, sint8 -200, uint16le 70000, sint16be -40000, uint8 3.7, uint8 -1.5, sint32le 3e9)
+#write (F, uint8 2.5, uint8 255.6, sint8 -128.7, sint8 -2.5, sint8 -2.6, uint8 -0.6, sint16le 1e300, uint8 -1e93)
+#fclose F
+POV
+"$LUCENT" -q +W8 +H6 -F words.pov > err.txt 2>&1
+rc=$?
+check "binary #write of out-of-range words (status 0)" [ $rc -eq 0 ]
+check "the words are rounded and clamped as POV-Ray writes them" \
+	[ "$(od -An -tx1 words.bin | tr -d ' \n')" = ff80ffff80000400ffffff7f03ff80fefd00ff7f00 ]
+
 # ---- the file rule: what is allowed ----
 mkdir -p scene/sub lib
 echo '#declare FromSub = 1;' > scene/sub/a.inc

@@ -111,6 +111,13 @@ static enum kw skip_block(struct parser *p, int stop, int depth, struct srcpos o
 	               f->kind == FRAME_MACRO ? " inside its macro" : " in its file");
 }
 
+/* The '#' of the directive skip_block stopped at. */
+static struct srcpos skipped_to(struct parser *p)
+{
+	const struct frame *f = top(p);
+	return f->toks[f->pos - 2].pos;
+}
+
 /* ---- the block stack ---- */
 
 static struct cond *push_cond(struct parser *p, enum cond_kind k, struct srcpos pos)
@@ -119,6 +126,7 @@ static struct cond *push_cond(struct parser *p, enum cond_kind k, struct srcpos 
 		parse_error_at(p, pos, "#if, #switch, #while and #for nested too deeply (more than %d)", MAX_CONDS);
 	struct cond *c = &p->conds[p->nconds++];
 	memset(c, 0, sizeof *c);
+	c->serial = ++p->cond_serial;
 	c->kind = k;
 	c->frame = p->nframes - 1;
 	c->pos = pos;
@@ -133,11 +141,25 @@ static struct cond *top_cond(struct parser *p)
 	return &p->conds[p->nconds - 1];
 }
 
+/* Directives run wherever their tokens are, inside an expression too: an
+ * #end among an #elseif's or a #case's operands closes the block they
+ * belong to (and with it, at a macro's end, the macro's frame). After
+ * such operands, is the innermost block still the one numbered `serial`
+ * in this frame? If not, the operands' position is an error. */
+static void cond_intact(struct parser *p, unsigned serial, struct srcpos at, const char *what, const char *block)
+{
+	const struct cond *c = top_cond(p);
+	if (!c || c->serial != serial)
+		parse_error_at(p, at, "the operands of %s closed the %s they belong to (a directive among them)", what,
+		               block);
+}
+
 /* ---- #if, #ifdef, #ifndef, #else, #elseif ---- */
 
 /* After a false condition: find the branch to run, or the #end. */
 static void skip_false_branch(struct parser *p, struct srcpos open)
 {
+	unsigned serial = top_cond(p)->serial;
 	for (;;) {
 		enum kw k = skip_block(p, STOP_ELSE, 0, open, "#if");
 		if (k == KW_END) {
@@ -146,7 +168,10 @@ static void skip_false_branch(struct parser *p, struct srcpos open)
 		}
 		if (k == KW_ELSE)
 			return;
-		if (parse_truthy(paren_float(p))) /* #elseif */
+		struct srcpos at = skipped_to(p);
+		bool yes = parse_truthy(paren_float(p)); /* #elseif */
+		cond_intact(p, serial, at, "#elseif", "#if");
+		if (yes)
 			return;
 	}
 }
@@ -208,6 +233,16 @@ static bool case_matches(struct parser *p, enum kw k, double v)
 	return v >= lo && v <= hi;
 }
 
+/* case_matches for the switch c (the innermost block), which its
+ * operands must leave open; `at`: the directive's '#'. */
+static bool case_matches_in(struct parser *p, enum kw k, struct cond *c, struct srcpos at)
+{
+	unsigned serial = c->serial;
+	bool yes = case_matches(p, k, c->value);
+	cond_intact(p, serial, at, k == KW_CASE ? "#case" : "#range", "#switch");
+	return yes;
+}
+
 /* Skip to the next clause of the switch c that applies, or its #end. */
 static void skip_to_case(struct parser *p, struct cond *c)
 {
@@ -217,7 +252,7 @@ static void skip_to_case(struct parser *p, struct cond *c)
 			p->nconds--;
 			return;
 		}
-		if (k == KW_ELSE || case_matches(p, k, c->value)) {
+		if (k == KW_ELSE || case_matches_in(p, k, c, skipped_to(p))) {
 			c->matched = true;
 			return;
 		}
@@ -239,10 +274,10 @@ static void dir_case(struct parser *p, struct srcpos at, enum kw k)
 		parse_error_at(p, at, "#%s outside a #switch", kw_names[k]);
 	if (c->matched) {
 		/* Falling through from the clause above: skip the operands. */
-		(void)case_matches(p, k, c->value);
+		(void)case_matches_in(p, k, c, at);
 		return;
 	}
-	if (case_matches(p, k, c->value))
+	if (case_matches_in(p, k, c, at))
 		c->matched = true;
 	else
 		skip_to_case(p, c);

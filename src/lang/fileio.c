@@ -9,6 +9,7 @@
 
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -336,8 +337,23 @@ static void read_items(struct parser *p, struct srcpos at, const char *fname, st
 	parse_expect(p, TOK_RPAREN);
 }
 
-static void put_word(FILE *fp, long long x, int bytes, bool big)
+/* Float x as a binary word of `bytes` bytes: rounded (floor(x + 0.5)) and
+ * held to the word's range, as POV-Ray 3.7 writes it (measured: uint8 3.7
+ * gives 4, 2.5 gives 3, 300 gives 255, -0.6 gives 0; sint8 -2.5 gives -2,
+ * -200 gives -128; sint16le 1e300 gives 32767; an unsigned word's range
+ * stops at the type's maximum). NaN is written as 0. */
+static void put_word(FILE *fp, double v, int bytes, bool is_signed, bool big)
 {
+	double hi = is_signed ? ldexp(1, 8 * bytes - 1) - 1 : ldexp(1, 8 * bytes) - 1;
+	double lo = is_signed ? -hi - 1 : 0;
+	double r = floor(v + 0.5);
+	long long x = 0;
+	if (r > hi)
+		x = (long long)hi;
+	else if (r < lo)
+		x = (long long)lo;
+	else if (r == r)
+		x = (long long)r;
 	for (int i = 0; i < bytes; i++) {
 		int shift = big ? (bytes - 1 - i) * 8 : i * 8;
 		fputc((int)((unsigned long long)x >> shift) & 0xff, fp);
@@ -357,15 +373,18 @@ void parse_write(struct parser *p)
 	int slot = parse_own(p, f, unref_file);
 	while (parse_accept(p, TOK_COMMA)) {
 		int bytes = 0;
-		bool big = false;
+		bool big = false, is_signed = false;
 		const struct token *t = parse_peek(p);
 		if (t->kind == TOK_KEYWORD) {
 			switch (t->kw) {
-			case KW_UINT8: case KW_SINT8: bytes = 1; break;
-			case KW_UINT16BE: case KW_SINT16BE: bytes = 2; big = true; break;
-			case KW_UINT16LE: case KW_SINT16LE: bytes = 2; break;
-			case KW_SINT32BE: bytes = 4; big = true; break;
-			case KW_SINT32LE: bytes = 4; break;
+			case KW_UINT8: bytes = 1; break;
+			case KW_SINT8: bytes = 1; is_signed = true; break;
+			case KW_UINT16BE: bytes = 2; big = true; break;
+			case KW_SINT16BE: bytes = 2; big = true; is_signed = true; break;
+			case KW_UINT16LE: bytes = 2; break;
+			case KW_SINT16LE: bytes = 2; is_signed = true; break;
+			case KW_SINT32BE: bytes = 4; big = true; is_signed = true; break;
+			case KW_SINT32LE: bytes = 4; is_signed = true; break;
 			default: break;
 			}
 			if (bytes)
@@ -378,7 +397,7 @@ void parse_write(struct parser *p)
 		}
 		if (bytes) {
 			parse_need_float(p, &v, "a binary #write");
-			put_word(f->fp, (long long)v.v[0], bytes, big);
+			put_word(f->fp, v.v[0], bytes, is_signed, big);
 			continue;
 		}
 		switch (v.kind) {

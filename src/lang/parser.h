@@ -43,6 +43,7 @@ struct cond {
 	double end, step;     /* FOR */
 	double value;         /* SWITCH: the value switched on */
 	bool matched;         /* SWITCH: a #case has matched (later ones fall through) */
+	unsigned serial;      /* which push made it (cond_intact) */
 };
 
 /* Something to free if the parse fails before it is handed on. */
@@ -67,6 +68,7 @@ struct parser {
 	size_t csg_depth;            /* CSG objects open around the current one */
 	struct cond conds[MAX_CONDS];
 	int nconds;
+	unsigned cond_serial;        /* pushes so far, numbering the conds */
 	bool interrupted;            /* stopped through o->stop */
 	bool defer;                  /* reading a directive's operands (see
 	                              * parse_peek_cont) */
