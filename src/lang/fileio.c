@@ -337,11 +337,10 @@ static void read_items(struct parser *p, struct srcpos at, const char *fname, st
 	parse_expect(p, TOK_RPAREN);
 }
 
-/* Float x as a binary word of `bytes` bytes: rounded (floor(x + 0.5)) and
- * held to the word's range, as POV-Ray 3.7 writes it (measured: uint8 3.7
- * gives 4, 2.5 gives 3, 300 gives 255, -0.6 gives 0; sint8 -2.5 gives -2,
- * -200 gives -128; sint16le 1e300 gives 32767; an unsigned word's range
- * stops at the type's maximum). NaN is written as 0. */
+/* v as a binary word of `bytes` bytes: rounded (floor(v + 0.5)) and held
+ * to the word's range, as POV-Ray 3.7 writes it (measured: uint8 3.7 gives
+ * 4, 2.5 gives 3, 300 gives 255, -0.6 gives 0; sint8 -2.5 gives -2, -200
+ * gives -128; sint16le 1e300 gives 32767). NaN is written as 0. */
 static void put_word(FILE *fp, double v, int bytes, bool is_signed, bool big)
 {
 	double hi = is_signed ? ldexp(1, 8 * bytes - 1) - 1 : ldexp(1, 8 * bytes) - 1;
