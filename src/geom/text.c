@@ -129,10 +129,36 @@ static bool inside_2d(const struct text *T, double x, double y)
 }
 
 /* Every hit with tmin < t < tmax, passed to `take` in no order; stops
- * early when take returns false. */
+ * early when take returns false. With `closest`, only the nearest hit
+ * matters: each hit lowers tmax, and the glyphs are taken in the ray's
+ * direction along x and skipped where their boxes lie beyond it (a ray
+ * along a line of 150 letters tested every piece of every letter). */
 typedef bool (*hit_sink)(void *ctx, double t, int part, double u);
 
-static void text_hits(const struct text *T, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx)
+/* Does the ray o + t d, for some t in [lo, hi], pass through glyph g's box
+ * (widened by a little, since a hit's point is worked out from its piece
+ * and may round past the box)? */
+static bool glyph_in_reach(const struct tglyph *g, vec3 o, vec3 d, double lo, double hi)
+{
+	double oo[2] = {o.x, o.y}, dd[2] = {d.x, d.y};
+	for (int k = 0; k < 2; k++) {
+		double e = 1e-7 * (fabs(g->lo[k]) + fabs(g->hi[k]) + 1);
+		double a = g->lo[k] - e, b = g->hi[k] + e;
+		if (dd[k] == 0) {
+			if (oo[k] < a || oo[k] > b)
+				return false;
+			continue;
+		}
+		double ta = (a - oo[k]) / dd[k], tb = (b - oo[k]) / dd[k];
+		lo = fmax(lo, fmin(ta, tb));
+		hi = fmin(hi, fmax(ta, tb));
+	}
+	double slack = 1e-9 * (fabs(lo) + fabs(hi) + 1);
+	return lo <= hi + slack;
+}
+
+static void text_hits(const struct text *T, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx,
+                      bool closest)
 {
 	if (T->nglyph == 0)
 		return;
@@ -167,9 +193,12 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 			double t = (z - o.z) / d.z;
 			if (!(t > tmin && t < tmax))
 				continue;
-			if (inside_2d(T, o.x + t * d.x, o.y + t * d.y))
+			if (inside_2d(T, o.x + t * d.x, o.y + t * d.y)) {
 				if (!take(ctx, t, z == T->zfront ? PART_FRONT : PART_BACK, 0))
 					return;
+				if (closest && t < tmax)
+					tmax = t;
+			}
 		}
 	}
 
@@ -177,8 +206,10 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 	double a = d.y, b = -d.x, c = o.y * d.x - o.x * d.y;
 	if (a == 0 && b == 0)
 		return; /* a ray along z */
-	for (int gi = 0; gi < T->nglyph; gi++) {
-		const struct tglyph *g = &T->glyph[gi];
+	for (int step = 0; step < T->nglyph; step++) {
+		const struct tglyph *g = &T->glyph[closest && d.x < 0 ? T->nglyph - 1 - step : step];
+		if (closest && !glyph_in_reach(g, o, d, lo, fmin(hi, tmax)))
+			continue;
 		/* Skip a glyph whose box lies on one side of the line. */
 		double f00 = a * g->lo[0] + b * g->lo[1] + c, f01 = a * g->lo[0] + b * g->hi[1] + c;
 		double f10 = a * g->hi[0] + b * g->lo[1] + c, f11 = a * g->hi[0] + b * g->hi[1] + c;
@@ -206,6 +237,8 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 					continue;
 				if (!take(ctx, t, i, u))
 					return;
+				if (closest)
+					tmax = t;
 			}
 		}
 	}
@@ -214,7 +247,7 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 static bool text_intersect(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *h)
 {
 	struct hit_closest c = {.found = false};
-	text_hits((const struct text *)o, r, tmin, tmax, hit_take_closest, &c);
+	text_hits((const struct text *)o, r, tmin, tmax, hit_take_closest, &c, true);
 	if (!c.found)
 		return false;
 	h->t = c.t;
@@ -226,7 +259,7 @@ static bool text_intersect(const struct object *o, const struct ray *r, double t
 static int text_all_hits(const struct object *o, const struct ray *r, double tmin, double tmax, struct hit *out, int max)
 {
 	struct hit_all a = {.o = o, .out = out, .max = max};
-	text_hits((const struct text *)o, r, tmin, tmax, hit_take_all, &a);
+	text_hits((const struct text *)o, r, tmin, tmax, hit_take_all, &a, false);
 	return a.n;
 }
 
