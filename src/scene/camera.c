@@ -289,7 +289,6 @@ static bool pinhole(const struct camera *c, double u, double v, struct ray *r)
 bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
                 struct ray *r)
 {
-	double k = c->aperture / 2;
 	if (c->kind == CAMERA_PERSPECTIVE && (lu != 0 || lv != 0)) {
 		/* The lens ray below with the pinhole ray left unnormalised (one
 		 * square root and division less a sample): it starts at the
@@ -303,6 +302,7 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
 			return true;
 		}
 		vec3 focus = v3_madd(c->location, d, c->focal_dist / dd);
+		double k = c->aperture / 2;
 		r->org = v3_add(c->location, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
 		r->dir = v3_norm(v3_sub(focus, r->org));
 		return true;
@@ -323,6 +323,7 @@ bool camera_ray(const struct camera *c, double x, double y, int w, int h, double
 		return true;
 	double t = (c->focal_dist - v3_dot(v3_sub(r->org, c->location), c->dn)) / cosd;
 	vec3 focus = v3_madd(r->org, r->dir, t);
+	double k = c->aperture / 2;
 	r->org = v3_add(r->org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
 	r->dir = v3_norm(v3_sub(focus, r->org));
 	return true;
