@@ -42,6 +42,9 @@ struct tseg {
 struct tglyph {
 	int first, n;
 	double lo[2], hi[2];
+	double reach_lo[2], reach_hi[2]; /* the box widened by a little, for
+	                                  * glyph_in_reach: a hit's point is worked
+	                                  * out from its piece and may round past it */
 };
 
 enum { PART_FRONT = -1, PART_BACK = -2 };
@@ -135,26 +138,29 @@ static bool inside_2d(const struct text *T, double x, double y)
  * along a line of 150 letters tested every piece of every letter). */
 typedef bool (*hit_sink)(void *ctx, double t, int part, double u);
 
-/* Does the ray o + t d, for some t in [lo, hi], pass through glyph g's box
- * (widened by a little, since a hit's point is worked out from its piece
- * and may round past the box)? */
-static bool glyph_in_reach(const struct tglyph *g, vec3 o, vec3 d, double lo, double hi)
+/* Narrow [*lo, *hi] to where the ray o + t d is inside the box [blo, bhi]
+ * in x and y; false when a ray parallel to an axis is outside it. */
+static bool clip_box2(const double blo[2], const double bhi[2], vec3 o, vec3 d, double *lo, double *hi)
 {
 	double oo[2] = {o.x, o.y}, dd[2] = {d.x, d.y};
 	for (int k = 0; k < 2; k++) {
-		double e = 1e-7 * (fabs(g->lo[k]) + fabs(g->hi[k]) + 1);
-		double a = g->lo[k] - e, b = g->hi[k] + e;
-		if (dd[k] == 0) {
-			if (oo[k] < a || oo[k] > b)
-				return false;
-			continue;
+		if (dd[k] != 0) {
+			double a = (blo[k] - oo[k]) / dd[k], b = (bhi[k] - oo[k]) / dd[k];
+			*lo = fmax(*lo, fmin(a, b));
+			*hi = fmin(*hi, fmax(a, b));
+		} else if (oo[k] < blo[k] || oo[k] > bhi[k]) {
+			return false;
 		}
-		double ta = (a - oo[k]) / dd[k], tb = (b - oo[k]) / dd[k];
-		lo = fmax(lo, fmin(ta, tb));
-		hi = fmin(hi, fmax(ta, tb));
 	}
-	double slack = 1e-9 * (fabs(lo) + fabs(hi) + 1);
-	return lo <= hi + slack;
+	return true;
+}
+
+/* Does the ray reach glyph g for some t in [lo, hi] (with a little slack)? */
+static bool glyph_in_reach(const struct tglyph *g, vec3 o, vec3 d, double lo, double hi)
+{
+	if (!clip_box2(g->reach_lo, g->reach_hi, o, d, &lo, &hi))
+		return false;
+	return lo <= hi + 1e-9 * (fabs(lo) + fabs(hi) + 1);
 }
 
 static void text_hits(const struct text *T, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx,
@@ -173,17 +179,7 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 		return;
 	}
 	/* And inside the text's box in x and y. */
-	double dd[2] = {d.x, d.y}, oo[2] = {o.x, o.y};
-	for (int k = 0; k < 2; k++) {
-		if (dd[k] != 0) {
-			double a = (T->lo[k] - oo[k]) / dd[k], b = (T->hi[k] - oo[k]) / dd[k];
-			lo = fmax(lo, fmin(a, b));
-			hi = fmin(hi, fmax(a, b));
-		} else if (oo[k] < T->lo[k] || oo[k] > T->hi[k]) {
-			return;
-		}
-	}
-	if (!(lo <= hi))
+	if (!clip_box2(T->lo, T->hi, o, d, &lo, &hi) || !(lo <= hi))
 		return;
 
 	/* Caps. */
@@ -406,6 +402,9 @@ static void add_glyph(struct text *T, const struct ttf_outline *ol, double s, do
 		}
 	}
 	for (int k = 0; k < 2; k++) {
+		double e = 1e-7 * (fabs(g->lo[k]) + fabs(g->hi[k]) + 1);
+		g->reach_lo[k] = g->lo[k] - e;
+		g->reach_hi[k] = g->hi[k] + e;
 		T->lo[k] = fmin(T->lo[k], g->lo[k]);
 		T->hi[k] = fmax(T->hi[k], g->hi[k]);
 	}

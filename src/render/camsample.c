@@ -310,18 +310,12 @@ static int cdf_find(const double *cdf, int n, double t, double *frac)
 	return lo;
 }
 
-/* The lens point (lu, lv) for the uniform pair (a, b): in the disc of
- * radius 1/2, or in the square [-1/2, 1/2]^2 drawn from the bokeh (its
- * pigment's x to the right and y downwards, as measured: a bokeh bright
- * where y < 0.5 moves the samples up). */
-static void lens_point(const struct lens *l, double a, double b, double *lu, double *lv)
+/* The bokeh's lens point (lu, lv) for the uniform pair (a, b): in the
+ * square [-1/2, 1/2]^2, drawn from the bokeh (its pigment's x to the right
+ * and y downwards, as measured: a bokeh bright where y < 0.5 moves the
+ * samples up). */
+static void bokeh_point(const struct lens *l, double a, double b, double *lu, double *lv)
 {
-	if (!l->col_cdf) {
-		double rad = 0.5 * sqrt(a), phi = 2 * M_PI * b;
-		*lu = rad * cos(phi);
-		*lv = rad * sin(phi);
-		return;
-	}
 	int n = BOKEH_N;
 	double fx, fy;
 	int i = cdf_find(l->col_cdf, n, a * l->col_cdf[n], &fx);
@@ -329,6 +323,19 @@ static void lens_point(const struct lens *l, double a, double b, double *lu, dou
 	int j = cdf_find(row, n, b * row[n], &fy);
 	*lu = (i + fx) / n - 0.5;
 	*lv = 0.5 - (j + fy) / n;
+}
+
+/* cos and sin of 2 pi times Halton point n's coordinate 1 (unshifted). */
+static void lens_turn(const struct lens *l, int n, double *c, double *s)
+{
+	if (n <= l->ntab) {
+		*c = l->turn[2 * n];
+		*s = l->turn[2 * n + 1];
+		return;
+	}
+	double phi = 2 * M_PI * radical_inverse((uint32_t)n, HALTON_BASES[1]);
+	*c = cos(phi);
+	*s = sin(phi);
 }
 
 /* Coordinate k of Halton point n shifted by `shift` (in [0, 1)). */
@@ -385,9 +392,11 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
 	double shift[4];
 	for (int k = 0; k < 4; k++)
 		shift[k] = hash_uniform((uint32_t)px, (uint32_t)py, sample, PURPOSE_LENS + (uint32_t)k);
-	/* On the disc, the shift of the angle's coordinate turns the lens
-	 * point by 2 pi shift[1]: the table's turns of the unshifted points,
-	 * turned once more (the same angle, wrapped or not). */
+	/* On the disc of radius 1/2 (no bokeh), the radius is the square
+	 * root of coordinate 0 and the angle 2 pi times coordinate 1: its
+	 * shift turns the point by 2 pi shift[1], so the unshifted point's
+	 * turn (lens_turn) is turned once more (the same angle, wrapped or
+	 * not). */
 	bool disc = !l->col_cdf;
 	double tc = disc ? cos(2 * M_PI * shift[1]) : 1, ts = disc ? sin(2 * M_PI * shift[1]) : 0;
 	/* Welford's running mean and sum of squared deviations per channel. */
@@ -395,13 +404,13 @@ static rgb focal_blur(struct tracer *tr, const struct lens *l, double x, double 
 	for (int n = 1; n <= l->max; n++) {
 		/* Halton point 0 is the corner: the samples start at 1. */
 		double lu, lv;
-		if (disc && n <= l->ntab) {
-			double rad = 0.5 * sqrt(lens_dim(l, 0, n, shift[0]));
-			double c0 = l->turn[2 * n], s0 = l->turn[2 * n + 1];
+		if (disc) {
+			double rad = 0.5 * sqrt(lens_dim(l, 0, n, shift[0])), c0, s0;
+			lens_turn(l, n, &c0, &s0);
 			lu = rad * (c0 * tc - s0 * ts);
 			lv = rad * (s0 * tc + c0 * ts);
 		} else {
-			lens_point(l, lens_dim(l, 0, n, shift[0]), lens_dim(l, 1, n, shift[1]), &lu, &lv);
+			bokeh_point(l, lens_dim(l, 0, n, shift[0]), lens_dim(l, 1, n, shift[1]), &lu, &lv);
 		}
 		double jx = lens_dim(l, 2, n, shift[2]) - 0.5, jy = lens_dim(l, 3, n, shift[3]) - 0.5;
 		struct ray r;

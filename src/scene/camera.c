@@ -286,46 +286,46 @@ static bool pinhole(const struct camera *c, double u, double v, struct ray *r)
 	return true;
 }
 
+/* The lens ray from lens point (lu, lv) around org through focus: the
+ * origin moved across the lens, in the plane of right and up. */
+static void through_lens(const struct camera *c, vec3 org, vec3 focus, double lu, double lv, struct ray *r)
+{
+	double k = c->aperture / 2;
+	r->org = v3_add(org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
+	r->dir = v3_norm(v3_sub(focus, r->org));
+}
+
+/* Focal blur: move the origin across the lens and aim at the point where
+ * the pinhole ray meets the plane in focus. POV-Ray's lens has radius
+ * aperture/4 (measured: the blur of an edge at distance z with focus at f
+ * spans aperture/4 * |1/f - 1/z| |D|/|R| of the image width, for f = 1, 2,
+ * 3, 5 and z on both sides of f). A ray running along the focal plane
+ * (its cosine with the direction under 1e-6) keeps its pinhole path. */
 bool camera_ray(const struct camera *c, double x, double y, int w, int h, double lu, double lv,
                 struct ray *r)
 {
 	if (c->kind == CAMERA_PERSPECTIVE && (lu != 0 || lv != 0)) {
-		/* The lens ray below with the pinhole ray left unnormalised (one
-		 * square root and division less a sample): it starts at the
-		 * location, so it meets the plane in focus at focal_dist /
-		 * (d . D) times d. */
+		/* With the pinhole ray left unnormalised (one square root and
+		 * division less a sample): it starts at the location, so it
+		 * meets the plane in focus at focal_dist / (d . D) times d. */
 		vec3 d = v3_add(c->direction, comb(x / w - 0.5, c->right, 0.5 - y / h, c->up, 0, c->dn));
 		double dd = v3_dot(d, c->dn);
-		if (dd <= 0 || dd * dd < 1e-12 * v3_dot(d, d)) {
-			r->org = c->location;
+		r->org = c->location;
+		if (dd <= 0 || dd * dd < 1e-12 * v3_dot(d, d))
 			r->dir = v3_norm(d);
-			return true;
-		}
-		vec3 focus = v3_madd(c->location, d, c->focal_dist / dd);
-		double k = c->aperture / 2;
-		r->org = v3_add(c->location, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
-		r->dir = v3_norm(v3_sub(focus, r->org));
+		else
+			through_lens(c, c->location, v3_madd(c->location, d, c->focal_dist / dd), lu, lv, r);
 		return true;
 	}
 	if (!pinhole(c, x / w - 0.5, 0.5 - y / h, r))
 		return false;
 	if (lu == 0 && lv == 0)
 		return true;
-	/* Focal blur: move the origin across the lens, in the plane of right
-	 * and up, and aim at the point where the pinhole ray meets the plane
-	 * in focus. POV-Ray's lens has radius aperture/4 (measured: the blur
-	 * of an edge at distance z with focus at f spans aperture/4 *
-	 * |1/f - 1/z| |D|/|R| of the image width, for f = 1, 2, 3, 5 and z
-	 * on both sides of f). A ray running along the focal plane keeps its
-	 * pinhole path. */
 	double cosd = v3_dot(r->dir, c->dn);
 	if (cosd < 1e-6)
 		return true;
 	double t = (c->focal_dist - v3_dot(v3_sub(r->org, c->location), c->dn)) / cosd;
-	vec3 focus = v3_madd(r->org, r->dir, t);
-	double k = c->aperture / 2;
-	r->org = v3_add(r->org, comb(lu * k, c->rn, lv * k, c->un, 0, c->dn));
-	r->dir = v3_norm(v3_sub(focus, r->org));
+	through_lens(c, r->org, v3_madd(r->org, r->dir, t), lu, lv, r);
 	return true;
 }
 
