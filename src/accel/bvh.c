@@ -252,10 +252,12 @@ bool bvh_intersect(const struct bvh *b, const struct ray *r, double tmin, double
 				const struct object *o = b->objs[i];
 				if (o->flags & skip)
 					continue;
-				/* A loose object may have surface outside its box; POV-Ray
-				 * skips an object whose box the ray misses, so that surface
-				 * is not seen (see csg.c's culled). */
-				if (o->loose && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
+				/* An object whose box the ray misses is skipped: where the
+				 * leaf holds several, a slab test costs less than most
+				 * surfaces. A loose object may have surface outside its box;
+				 * POV-Ray skips it there too, so that surface is not seen
+				 * (see csg.c's culled). */
+				if ((o->loose || nd->count > 1) && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
 					continue;
 				struct hit th;
 				if (object_intersect(o, r, tmin, tmax, &th)) {
@@ -304,7 +306,7 @@ bool bvh_occluded(const struct bvh *b, const struct ray *r, double tmin, double 
 				const struct object *o = b->objs[i];
 				if (o->flags & skip)
 					continue;
-				if (o->loose && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
+				if ((o->loose || nd->count > 1) && !box_hit(&o->bounds, r->org, inv, tmin, tmax))
 					continue;
 				if (object_intersect(o, r, tmin, tmax, &h)) {
 					*blocker = o;
