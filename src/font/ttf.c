@@ -52,6 +52,7 @@ struct ttf_font {
 	bool symbol; /* the cmap is a (3, 0) symbol map */
 	size_t mac;  /* the Macintosh (1, 0) subtable, format 0 or 6 ... */
 	enum cmap_kind mac_kind; /* ... CMAP_NONE when there is none */
+	struct ttf_shared_outline **shared; /* nglyphs outlines read so far (NULL: not yet) */
 };
 
 /* ---- reading ---- */
@@ -296,6 +297,10 @@ void ttf_free(struct ttf_font *f)
 {
 	if (!f)
 		return;
+	if (f->shared)
+		for (unsigned g = 0; g < f->nglyphs; g++)
+			ttf_outline_release(f->shared[g]);
+	free(f->shared);
 	free(f->data);
 	free(f->pairs);
 	free(f);
@@ -806,4 +811,41 @@ void ttf_outline_free(struct ttf_outline *o)
 	free(o->p);
 	o->p = NULL;
 	o->n = 0;
+}
+
+struct ttf_shared_outline *ttf_glyph_shared(struct ttf_font *f, unsigned g)
+{
+	if (g >= f->nglyphs)
+		return NULL;
+	if (!f->shared) {
+		f->shared = calloc(f->nglyphs, sizeof *f->shared);
+		if (!f->shared) abort();
+	}
+	if (!f->shared[g]) {
+		/* A damaged glyph is read again at each use: its text is an error. */
+		struct ttf_outline ol;
+		if (!ttf_glyph_outline(f, g, &ol))
+			return NULL;
+		struct ttf_shared_outline *s = malloc(sizeof *s);
+		if (!s) abort();
+		s->ol = ol;
+		s->refs = 1; /* the font's */
+		f->shared[g] = s;
+	}
+	return ttf_outline_ref(f->shared[g]);
+}
+
+struct ttf_shared_outline *ttf_outline_ref(struct ttf_shared_outline *s)
+{
+	if (s)
+		s->refs++;
+	return s;
+}
+
+void ttf_outline_release(struct ttf_shared_outline *s)
+{
+	if (s && --s->refs == 0) {
+		ttf_outline_free(&s->ol);
+		free(s);
+	}
 }

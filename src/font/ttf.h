@@ -64,4 +64,18 @@ int ttf_kerning(const struct ttf_font *f, unsigned left, unsigned right);
 bool ttf_glyph_outline(const struct ttf_font *f, unsigned g, struct ttf_outline *out);
 void ttf_outline_free(struct ttf_outline *o);
 
+/* A glyph's outline read once per font and shared by its users (the text
+ * objects made from it), each holding a reference; it outlives the font. */
+struct ttf_shared_outline {
+	struct ttf_outline ol;
+	unsigned refs;
+};
+/* Glyph g's outline, read on its first use and kept by the font (f is
+ * changed only in that cache): a new reference, or NULL if its data is
+ * damaged. */
+struct ttf_shared_outline *ttf_glyph_shared(struct ttf_font *f, unsigned g);
+/* A new reference to s, and the release of one (the last frees it). */
+struct ttf_shared_outline *ttf_outline_ref(struct ttf_shared_outline *s);
+void ttf_outline_release(struct ttf_shared_outline *s);
+
 #endif

@@ -56,12 +56,13 @@ void prism_set_sturm(struct object *o, bool sturm);
 
 /* text { ttf FONT STRING thickness, offset }: the glyphs of codes[0..n)
  * (Unicode code points) laid out as POV-Ray 3.7 does (see text.c) and
- * extruded from z = 0 to z = thickness; the font is only read here (the
- * caller keeps it). A glyph whose data is damaged is left out and its code
+ * extruded from z = 0 to z = thickness. The font stays the caller's; the
+ * text shares the glyph outlines the font keeps (ttf_glyph_shared), which
+ * outlive it. A glyph whose data is damaged is left out and its code
  * point (or 0xFFFFFFFF for code 0) goes to *bad_glyph (may be NULL; 0 if
  * every glyph was read). */
 struct ttf_font;
-struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
+struct object *text_new(struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
                         double off_y, struct srcpos pos, uint32_t *bad_glyph);
 
 #endif

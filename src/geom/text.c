@@ -38,8 +38,11 @@ struct tseg {
 	double lo[2], hi[2]; /* its extent in x and y */
 };
 
-/* One glyph: the pieces seg[first, first + n) of the text. */
+/* One glyph: the outline src placed at (dx, dy), which becomes the pieces
+ * seg[first, first + n) of the text. */
 struct tglyph {
+	struct ttf_shared_outline *src; /* a reference */
+	double dx, dy;
 	int first, n;
 	double lo[2], hi[2];
 	double reach_lo[2], reach_hi[2]; /* the box widened by a little, for
@@ -49,12 +52,18 @@ struct tglyph {
 
 enum { PART_FRONT = -1, PART_BACK = -2 };
 
+/* The pieces are made from the glyphs' shared outlines when the text is
+ * prepared (or first traced or tested, at parse time): shapes.inc's
+ * Text_Width measures a text of every prefix of a string (Circle_Text:
+ * 11,000 glyphs for 150 letters), and a text that is only measured never
+ * needs them. */
 struct text {
 	struct object base;
-	struct tseg *seg;
-	int nseg, capseg;
+	struct tseg *seg;    /* nseg pieces, or NULL until made */
+	int nseg;
 	struct tglyph *glyph;
-	int nglyph, capglyph;
+	int nglyph;
+	double scale;        /* em units per font unit */
 	double z0, z1;       /* z0 <= z1 */
 	double zfront;       /* 0: the cap whose normal is -z */
 	double lo[2], hi[2]; /* the extent of every glyph */
@@ -86,6 +95,45 @@ static void extent(const double c[3], double *lo, double *hi)
 	}
 }
 
+/* Glyph g's pieces are made from its outline scaled by T->scale and moved
+ * by (g->dx, g->dy); its boxes are those of the pieces. */
+static void make_seg(const struct ttf_piece *p, double s, double dx, double dy, struct tseg *q)
+{
+	double x0 = p->x0 * s + dx, y0 = p->y0 * s + dy, x1 = p->x1 * s + dx, y1 = p->y1 * s + dy;
+	double cx = p->cx * s + dx, cy = p->cy * s + dy;
+	if (p->line) {
+		q->x[0] = x0, q->x[1] = x1 - x0, q->x[2] = 0;
+		q->y[0] = y0, q->y[1] = y1 - y0, q->y[2] = 0;
+	} else {
+		/* (1-u)^2 P0 + 2u(1-u) C + u^2 P1 */
+		q->x[0] = x0, q->x[1] = 2 * (cx - x0), q->x[2] = x0 - 2 * cx + x1;
+		q->y[0] = y0, q->y[1] = 2 * (cy - y0), q->y[2] = y0 - 2 * cy + y1;
+	}
+	extent(q->x, &q->lo[0], &q->hi[0]);
+	extent(q->y, &q->lo[1], &q->hi[1]);
+}
+
+static void make_pieces(struct text *T)
+{
+	T->seg = malloc((size_t)T->nseg * sizeof *T->seg);
+	if (!T->seg) abort();
+	for (int k = 0; k < T->nglyph; k++) {
+		const struct tglyph *g = &T->glyph[k];
+		for (int i = 0; i < g->n; i++)
+			make_seg(&g->src->ol.p[i], T->scale, g->dx, g->dy, &T->seg[g->first + i]);
+	}
+}
+
+/* The pieces, made on first need. prepare makes them before a render, so
+ * that only parse-time callers (trace(), inside(), one thread) may come
+ * here with a text whose pieces are not made yet. */
+static const struct tseg *pieces(const struct text *T)
+{
+	if (!T->seg && T->nseg)
+		make_pieces((struct text *)T);
+	return T->seg;
+}
+
 /* ---- intersection ---- */
 
 /* Is (x, y) inside glyph g (the even-odd rule)? The half-line towards +x
@@ -93,14 +141,14 @@ static void extent(const double c[3], double *lo, double *hi)
  * piece that leaves it upwards or arrives at it downwards, so that a
  * joint where the outline only touches the half-line counts twice or not
  * at all. */
-static bool inside_glyph(const struct text *T, const struct tglyph *g, double x, double y)
+static bool inside_glyph(const struct tseg *seg, const struct tglyph *g, double x, double y)
 {
 	if (!(x >= g->lo[0] && x <= g->hi[0] && y >= g->lo[1] && y <= g->hi[1]))
 		return false;
 	const double eps = 1e-9;
 	int count = 0;
 	for (int i = g->first; i < g->first + g->n; i++) {
-		const struct tseg *s = &T->seg[i];
+		const struct tseg *s = &seg[i];
 		if (y < s->lo[1] || y > s->hi[1] || x > s->hi[0])
 			continue;
 		double r[2];
@@ -125,8 +173,9 @@ static bool inside_2d(const struct text *T, double x, double y)
 		return false;
 	/* Glyphs may overlap (a negative offset, kerning): inside one is
 	 * inside the text. */
+	const struct tseg *seg = pieces(T);
 	for (int i = 0; i < T->nglyph; i++)
-		if (inside_glyph(T, &T->glyph[i], x, y))
+		if (inside_glyph(seg, &T->glyph[i], x, y))
 			return true;
 	return false;
 }
@@ -202,6 +251,7 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 	double a = d.y, b = -d.x, c = o.y * d.x - o.x * d.y;
 	if (a == 0 && b == 0)
 		return; /* a ray along z */
+	const struct tseg *seg = pieces(T);
 	for (int step = 0; step < T->nglyph; step++) {
 		const struct tglyph *g = &T->glyph[closest && d.x < 0 ? T->nglyph - 1 - step : step];
 		if (closest && !glyph_in_reach(g, o, d, lo, fmin(hi, tmax)))
@@ -212,7 +262,7 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 		if ((f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0))
 			continue;
 		for (int i = g->first; i < g->first + g->n; i++) {
-			const struct tseg *s = &T->seg[i];
+			const struct tseg *s = &seg[i];
 			f00 = a * s->lo[0] + b * s->lo[1] + c;
 			f01 = a * s->lo[0] + b * s->hi[1] + c;
 			f10 = a * s->hi[0] + b * s->lo[1] + c;
@@ -273,7 +323,7 @@ static vec3 text_normal(const struct object *o, vec3 p, const struct hit *h)
 		return v3(0, 0, -1);
 	if (h->part < 0 || h->part >= T->nseg)
 		return v3(0, 0, 1);
-	const struct tseg *s = &T->seg[h->part];
+	const struct tseg *s = &pieces(T)[h->part];
 	double dx = dpoly2(s->x, h->u), dy = dpoly2(s->y, h->u);
 	if (dx == 0 && dy == 0)
 		return v3(0, 0, 1);
@@ -319,23 +369,33 @@ static struct object *text_copy(const struct object *o)
 	struct text *c = malloc(sizeof *c);
 	if (!c) abort();
 	*c = *T;
-	c->capseg = T->nseg ? T->nseg : 1;
-	c->capglyph = T->nglyph ? T->nglyph : 1;
-	c->seg = malloc((size_t)c->capseg * sizeof *c->seg);
-	c->glyph = malloc((size_t)c->capglyph * sizeof *c->glyph);
-	if (!c->seg || !c->glyph) abort();
-	if (T->nseg) /* a text of spaces or no characters has none (and no array) */
+	c->glyph = malloc((T->nglyph ? (size_t)T->nglyph : 1) * sizeof *c->glyph);
+	if (!c->glyph) abort();
+	for (int i = 0; i < T->nglyph; i++) {
+		c->glyph[i] = T->glyph[i];
+		ttf_outline_ref(c->glyph[i].src);
+	}
+	c->seg = NULL;
+	if (T->seg) {
+		c->seg = malloc((size_t)T->nseg * sizeof *c->seg);
+		if (!c->seg) abort();
 		memcpy(c->seg, T->seg, (size_t)T->nseg * sizeof *c->seg);
-	if (T->nglyph)
-		memcpy(c->glyph, T->glyph, (size_t)T->nglyph * sizeof *c->glyph);
+	}
 	return &c->base;
 }
 
 static void text_destroy(struct object *o)
 {
 	struct text *T = (struct text *)o;
+	for (int i = 0; i < T->nglyph; i++)
+		ttf_outline_release(T->glyph[i].src);
 	free(T->seg);
 	free(T->glyph);
+}
+
+static void text_prepare(struct object *o)
+{
+	pieces((const struct text *)o);
 }
 
 static const struct object_ops text_ops = {
@@ -346,59 +406,34 @@ static const struct object_ops text_ops = {
 	.normal = text_normal,
 	.bounds = text_bounds,
 	.world_bounds = text_world_bounds,
+	.prepare = text_prepare,
 	.copy = text_copy,
 	.destroy = text_destroy,
 };
 
 /* ---- building ---- */
 
-/* Append glyph outline ol, scaled by s and moved by (dx, dy), to T. */
-static void add_glyph(struct text *T, const struct ttf_outline *ol, double s, double dx, double dy)
+/* Append glyph outline src (the reference passes to T) at (dx, dy) to T:
+ * its boxes now, its pieces when they are needed. */
+static void add_glyph(struct text *T, struct ttf_shared_outline *src, double dx, double dy)
 {
-	if (ol->n == 0)
-		return;
-	/* The arrays double as they fill: a long string (shapes.inc's
-	 * Text_Width of every prefix of a string) otherwise copied them
-	 * again for each glyph. */
-	if ((size_t)T->nseg + ol->n > (size_t)T->capseg) {
-		size_t cap = T->capseg ? 2 * (size_t)T->capseg : 64;
-		while (cap < (size_t)T->nseg + ol->n)
-			cap *= 2;
-		if (cap > INT_MAX) abort();
-		T->seg = realloc(T->seg, cap * sizeof *T->seg);
-		if (!T->seg) abort();
-		T->capseg = (int)cap;
-	}
-	if (T->nglyph == T->capglyph) {
-		size_t cap = T->capglyph ? 2 * (size_t)T->capglyph : 8;
-		if (cap > INT_MAX) abort();
-		T->glyph = realloc(T->glyph, cap * sizeof *T->glyph);
-		if (!T->glyph) abort();
-		T->capglyph = (int)cap;
-	}
+	const struct ttf_outline *ol = &src->ol;
+	if ((size_t)T->nseg + ol->n > INT_MAX) abort();
 	struct tglyph *g = &T->glyph[T->nglyph++];
+	g->src = src;
+	g->dx = dx;
+	g->dy = dy;
 	g->first = T->nseg;
 	g->n = (int)ol->n;
+	T->nseg += g->n;
 	g->lo[0] = g->lo[1] = INFINITY;
 	g->hi[0] = g->hi[1] = -INFINITY;
 	for (size_t i = 0; i < ol->n; i++) {
-		const struct ttf_piece *p = &ol->p[i];
-		struct tseg *q = &T->seg[T->nseg++];
-		double x0 = p->x0 * s + dx, y0 = p->y0 * s + dy, x1 = p->x1 * s + dx, y1 = p->y1 * s + dy;
-		double cx = p->cx * s + dx, cy = p->cy * s + dy;
-		if (p->line) {
-			q->x[0] = x0, q->x[1] = x1 - x0, q->x[2] = 0;
-			q->y[0] = y0, q->y[1] = y1 - y0, q->y[2] = 0;
-		} else {
-			/* (1-u)^2 P0 + 2u(1-u) C + u^2 P1 */
-			q->x[0] = x0, q->x[1] = 2 * (cx - x0), q->x[2] = x0 - 2 * cx + x1;
-			q->y[0] = y0, q->y[1] = 2 * (cy - y0), q->y[2] = y0 - 2 * cy + y1;
-		}
-		extent(q->x, &q->lo[0], &q->hi[0]);
-		extent(q->y, &q->lo[1], &q->hi[1]);
+		struct tseg q;
+		make_seg(&ol->p[i], T->scale, dx, dy, &q);
 		for (int k = 0; k < 2; k++) {
-			g->lo[k] = fmin(g->lo[k], q->lo[k]);
-			g->hi[k] = fmax(g->hi[k], q->hi[k]);
+			g->lo[k] = fmin(g->lo[k], q.lo[k]);
+			g->hi[k] = fmax(g->hi[k], q.hi[k]);
 		}
 	}
 	for (int k = 0; k < 2; k++) {
@@ -410,7 +445,7 @@ static void add_glyph(struct text *T, const struct ttf_outline *ol, double s, do
 	}
 }
 
-struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
+struct object *text_new(struct ttf_font *font, const uint32_t *codes, size_t n, double thickness, double off_x,
                         double off_y, struct srcpos pos, uint32_t *bad_glyph)
 {
 	struct text *T = calloc(1, sizeof *T);
@@ -424,13 +459,16 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 	if (bad_glyph)
 		*bad_glyph = 0;
 	double s = 1.0 / ttf_units_per_em(font);
+	T->scale = s;
+	T->glyph = malloc((n ? n : 1) * sizeof *T->glyph);
+	if (!T->glyph) abort();
 	double pen_x = 0, pen_y = 0;
 	unsigned prev = 0;
 	for (size_t i = 0; i < n; i++) {
 		unsigned g = ttf_glyph_index(font, codes[i]);
 		struct ttf_metrics m;
-		struct ttf_outline ol;
-		if (!ttf_glyph_metrics(font, g, &m) || !ttf_glyph_outline(font, g, &ol)) {
+		struct ttf_shared_outline *src = NULL;
+		if (!ttf_glyph_metrics(font, g, &m) || !(src = ttf_glyph_shared(font, g))) {
 			if (bad_glyph && !*bad_glyph)
 				*bad_glyph = codes[i] & ~TTF_MAC ? codes[i] & ~TTF_MAC : 0xFFFFFFFFu;
 			continue;
@@ -439,7 +477,7 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 			pen_x = -m.xmin * s;
 		else
 			pen_x += ttf_kerning(font, prev, g) * s;
-		if (ol.n) {
+		if (src->ol.n) {
 			/* POV-Ray 3.7 draws a composite glyph (an accented
 			 * letter: a base and an accent placed on it) as if its
 			 * xMin were min(xMin, 0): its xMin further right than a
@@ -451,7 +489,7 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 			 * "\u00ef" (xMin -12) is placed as a simple glyph
 			 * (tests/lang/text-composite). */
 			double shift = m.composite && m.xmin > 0 ? m.xmin * s : 0;
-			add_glyph(T, &ol, s, pen_x + shift, pen_y);
+			add_glyph(T, src, pen_x + shift, pen_y);
 		} else {
 			/* POV-Ray's bounds take in the pen position of an empty
 			 * glyph (a space). */
@@ -459,8 +497,8 @@ struct object *text_new(const struct ttf_font *font, const uint32_t *codes, size
 			T->hi[0] = fmax(T->hi[0], pen_x);
 			T->lo[1] = fmin(T->lo[1], pen_y);
 			T->hi[1] = fmax(T->hi[1], pen_y);
+			ttf_outline_release(src);
 		}
-		ttf_outline_free(&ol);
 		pen_x += m.advance * s + off_x;
 		pen_y += off_y;
 		prev = g;

@@ -457,7 +457,7 @@ struct object *parse_text(struct parser *p, struct srcpos at)
 	} else {
 		parse_expected(p, "ttf or internal");
 	}
-	const struct ttf_font *font = open_font(p, name, fat);
+	struct ttf_font *font = open_font(p, name, fat);
 	struct srcpos sat = parse_peek(p)->pos;
 	const char *str = parse_string(p);
 	parse_accept(p, TOK_COMMA);

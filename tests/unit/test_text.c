@@ -52,7 +52,7 @@ static struct ttf_font *font(const char *name)
 		}                                           \
 	} while (0)
 
-static struct object *text(const struct ttf_font *f, const char *s, double thick, double ox, double oy)
+static struct object *text(struct ttf_font *f, const char *s, double thick, double ox, double oy)
 {
 	uint32_t codes[64];
 	size_t n = strlen(s);
