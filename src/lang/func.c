@@ -7,6 +7,7 @@
 #include "scene/fn.h"
 #include "scene/texture.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -520,7 +521,9 @@ static struct fn *function_body(struct parser *p, const char **params, int np, b
 		double n = parse_float(p);
 		parse_expect(p, TOK_RPAREN);
 		parse_expect(p, TOK_RBRACE);
-		int count = fn_internal_params((int)n);
+		/* Truncated to its number (as POV-Ray does), once it is known to
+		 * fit an int. */
+		int count = n > -1 && n < INT_MAX ? fn_internal_params((int)n) : -1;
 		if (count < 0)
 			parse_error_at(p, at, "there is no internal function %g", n);
 		struct fn *f = fn_new(count);
