@@ -89,6 +89,27 @@ static struct aabb plane_inverse_bounds(const struct object *o)
 	return half_space_box((const struct plane *)o, true);
 }
 
+/* A transformed plane is still a plane: its normal turned by the inverse
+ * transpose and made unit, its distance that of a point of it moved. As
+ * POV-Ray keeps it, so that inside() measures its 1e-10 in world units;
+ * and a test no longer moves each ray into object space, nor its normal
+ * back out. At prepare, when no transform comes after. */
+static void plane_prepare(struct object *o)
+{
+	struct plane *p = (struct plane *)o;
+	if (!o->has_xf)
+		return;
+	vec3 n = mat_normal(&o->xf.inv, p->n);
+	double len = v3_len(n);
+	if (!(len > 0 && len < INFINITY))
+		return; /* kept as it is */
+	vec3 on = mat_point(&o->xf.fwd, v3_scale(p->n, p->d));
+	p->n = v3_scale(n, 1.0 / len);
+	p->d = v3_dot(on, p->n);
+	o->xf = xform_identity();
+	o->has_xf = false;
+}
+
 static struct object *plane_copy(const struct object *o)
 {
 	struct plane *c = malloc(sizeof *c);
@@ -105,6 +126,7 @@ static const struct object_ops plane_ops = {
 	.normal = plane_normal,
 	.bounds = plane_bounds,
 	.inverse_bounds = plane_inverse_bounds,
+	.prepare = plane_prepare,
 	.copy = plane_copy,
 };
 
