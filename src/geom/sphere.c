@@ -22,8 +22,9 @@ static int roots(const struct sphere *s, const struct ray *r, double t[2])
 	double a = v3_dot(r->dir, r->dir);
 	if (a == 0)
 		return 0;
+	double ia = 1.0 / a; /* one division, started before b is known */
 	double b = v3_dot(oc, r->dir);                  /* half the usual b */
-	vec3 perp = v3_madd(oc, r->dir, -b / a);         /* oc minus its along-ray part */
+	vec3 perp = v3_madd(oc, r->dir, -b * ia);        /* oc minus its along-ray part */
 	double disc = a * (s->r2 - v3_dot(perp, perp));  /* (b^2 - a c) computed stably */
 	if (disc < 0)
 		return 0;
@@ -33,7 +34,7 @@ static int roots(const struct sphere *s, const struct ray *r, double t[2])
 		t[0] = t[1] = 0;
 		return 2;
 	}
-	double t0 = q / a, t1 = c / q;
+	double t0 = q * ia, t1 = c / q;
 	t[0] = fmin(t0, t1);
 	t[1] = fmax(t0, t1);
 	return 2;
