@@ -212,6 +212,15 @@ static bool glyph_in_reach(const struct tglyph *g, vec3 o, vec3 d, double lo, do
 	return lo <= hi + 1e-9 * (fabs(lo) + fabs(hi) + 1);
 }
 
+/* Does the box [lo, hi] in x and y lie wholly on one side of the line
+ * a X + b Y + c = 0? Then nothing in it meets the line. */
+static bool off_line(const double lo[2], const double hi[2], double a, double b, double c)
+{
+	double f00 = a * lo[0] + b * lo[1] + c, f01 = a * lo[0] + b * hi[1] + c;
+	double f10 = a * hi[0] + b * lo[1] + c, f11 = a * hi[0] + b * hi[1] + c;
+	return (f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0);
+}
+
 static void text_hits(const struct text *T, const struct ray *r, double tmin, double tmax, hit_sink take, void *ctx,
                       bool closest)
 {
@@ -256,18 +265,11 @@ static void text_hits(const struct text *T, const struct ray *r, double tmin, do
 		const struct tglyph *g = &T->glyph[closest && d.x < 0 ? T->nglyph - 1 - step : step];
 		if (closest && !glyph_in_reach(g, o, d, lo, fmin(hi, tmax)))
 			continue;
-		/* Skip a glyph whose box lies on one side of the line. */
-		double f00 = a * g->lo[0] + b * g->lo[1] + c, f01 = a * g->lo[0] + b * g->hi[1] + c;
-		double f10 = a * g->hi[0] + b * g->lo[1] + c, f11 = a * g->hi[0] + b * g->hi[1] + c;
-		if ((f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0))
+		if (off_line(g->lo, g->hi, a, b, c))
 			continue;
 		for (int i = g->first; i < g->first + g->n; i++) {
 			const struct tseg *s = &seg[i];
-			f00 = a * s->lo[0] + b * s->lo[1] + c;
-			f01 = a * s->lo[0] + b * s->hi[1] + c;
-			f10 = a * s->hi[0] + b * s->lo[1] + c;
-			f11 = a * s->hi[0] + b * s->hi[1] + c;
-			if ((f00 > 0 && f01 > 0 && f10 > 0 && f11 > 0) || (f00 < 0 && f01 < 0 && f10 < 0 && f11 < 0))
+			if (off_line(s->lo, s->hi, a, b, c))
 				continue;
 			double q[3] = {a * s->x[0] + b * s->y[0] + c, a * s->x[1] + b * s->y[1], a * s->x[2] + b * s->y[2]};
 			double roots[2];
